@@ -1,4 +1,4 @@
-#include "flight/model/interpolation.hpp"
+#include "flight/model/math/interpolation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,193 @@
+// The federate runtime: one DDS participant, typed publish/subscribe, and the frame loop that
+// runs the federate's step on every tick and acknowledges it with its compute time.
+//
+// Subscribes: fedsim/frame_tick (profile "tick"), fedsim/sim_command ("command").
+// Publishes:  fedsim/frame_done ("frame_done") once per stepped frame,
+//             fedsim/federate_status ("status") on every state change and once a second.
+//
+// Lockstep inputs: a subscription made with `lockstep_input = true` must deliver the sample of
+// frame N-1 before frame N steps (when a writer is matched), which makes a lockstep run
+// reproducible: every federate sees exactly the previous frame's data, whatever the thread
+// timing. A missing input is waited for at most --input-timeout (half a frame in realtime).
+#pragma once
+
+#include "common/runtime/dds_participant.hpp"
+#include "common/runtime/federate_options.hpp"
+#include "common/runtime/publisher.hpp"
+#include "common/runtime/subscription.hpp"
+#include "common/util/latency_stats.hpp"
+
+#include <spdlog/logger.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace fedsim::runtime {
+
+/// What a federate's step needs to know about the frame it computes.
+struct FrameContext {
+  std::uint64_t frame = 0;       // tick number
+  std::uint64_t sim_frame = 0;   // RUN frames since the last reset
+  double sim_time_s = 0.0;       // simulation time at the start of the frame [s]
+  double dt_s = 0.0;             // simulation step of this frame [s] (0 when frozen)
+  double frame_period_s = 0.0;   // nominal frame period [s]
+  msg::RunState run_state = msg::RUN_STATE_FREEZE;
+  std::uint32_t reset_count = 0;
+  msg::TimingMode mode = msg::TIMING_MODE_REALTIME;
+
+  bool running() const { return run_state == msg::RUN_STATE_RUN; }
+  bool resetting() const { return run_state == msg::RUN_STATE_RESET; }
+  msg::FrameStamp stamp() const {
+    msg::FrameStamp s;
+    s.frame(frame);
+    s.sim_time_s(sim_time_s);
+    return s;
+  }
+};
+
+/// Per-federate frame statistics (compute time of the step, overruns).
+struct FrameStatistics {
+  std::uint64_t frames = 0;
+  std::uint64_t overruns = 0;           // step took longer than the frame period
+  std::uint64_t repeated_ticks = 0;     // a tick seen twice (the acknowledgement was re-sent)
+  std::uint64_t skipped_ticks = 0;      // realtime: ticks that arrived while one was pending
+  std::uint64_t late_inputs = 0;        // frames stepped without a lockstep input
+  util::LatencyStats compute;           // step compute time
+  util::LatencyStats tick_latency;      // tick publish -> step start
+};
+
+class Federate {
+ public:
+  using StepFunction = std::function<void(const FrameContext&)>;
+  using CommandHandler = std::function<void(const msg::SimCommand&)>;
+
+  explicit Federate(const FederateOptions& options);
+  ~Federate();
+  Federate(const Federate&) = delete;
+  Federate& operator=(const Federate&) = delete;
+
+  const std::string& name() const { return options_.name; }
+  const FederateOptions& options() const { return options_; }
+  spdlog::logger& log() const { return *log_; }
+  const std::shared_ptr<DdsParticipant>& dds() const { return dds_; }
+
+  template <class T>
+  Publisher<T>& publish(const std::string& topic, const std::string& qos_profile) {
+    auto pub = std::make_shared<Publisher<T>>(dds_, topic, qos_profile);
+    endpoints_.push_back(pub);
+    flushers_.push_back([p = pub.get()] { p->wait_for_acknowledgments(std::chrono::seconds(1)); });
+    return *pub;
+  }
+
+  template <class T>
+  Subscription<T>& subscribe(const std::string& topic, const std::string& qos_profile,
+                             bool lockstep_input = false) {
+    if (!lockstep_input) {
+      auto sub = std::make_shared<Subscription<T>>(dds_, topic, qos_profile);
+      endpoints_.push_back(sub);
+      return *sub;
+    }
+    if constexpr (Stamped<T>) {
+      auto input = std::make_shared<LockstepInput>();
+      input->topic = topic;
+      auto sub = std::make_shared<Subscription<T>>(
+          dds_, topic, qos_profile, [this, in = input.get()](const T& sample, const auto&) {
+            in->last_frame.store(static_cast<std::int64_t>(sample.stamp().frame()));
+            on_lockstep_input();
+          });
+      input->matched_writers = [s = sub.get()] { return s->matched_writers(); };
+      {
+        std::lock_guard lock(frame_mutex_);
+        inputs_.push_back(input);
+      }
+      endpoints_.push_back(sub);
+      return *sub;
+    } else {
+      throw DdsError("topic " + topic + " has no FrameStamp and cannot be a lockstep input");
+    }
+  }
+
+  /// Commands (other than SHUTDOWN, which the runtime handles) are delivered inside the frame,
+  /// just before the step, so a model never sees a command in the middle of a step.
+  void on_command(CommandHandler handler) { command_handler_ = std::move(handler); }
+  /// Called once when the federate stops, after the last step (flush files here).
+  void on_stop(std::function<void()> handler) { stop_handler_ = std::move(handler); }
+
+  /// Runs the frame loop until SIGINT/SIGTERM, a SHUTDOWN command, --duration or --frames.
+  /// Returns the process exit code (0 = clean stop, 1 = the step failed).
+  int run(StepFunction step);
+  /// Asks the loop to stop after the current frame (thread-safe).
+  void stop(const std::string& reason);
+  /// Marks the federate failed (exit code 1) and stops it.
+  void fail(const std::string& reason);
+
+  FrameStatistics statistics() const;
+
+ private:
+  struct LockstepInput {
+    std::string topic;
+    std::function<int()> matched_writers;
+    std::atomic<std::int64_t> last_frame{-1};
+  };
+
+  void handle_tick(const msg::FrameTick& tick);
+  void handle_command(const msg::SimCommand& command);
+  void on_lockstep_input();
+  bool inputs_ready_locked(std::uint64_t frame) const;
+  void step_pending_locked(bool forced);
+  void publish_done_locked(std::uint64_t frame, float compute_us, std::uint64_t latency_ns);
+  void publish_status(msg::FederateState state, const std::string& message);
+  void wait_for_inputs_to_match();
+  void loop_until_stop();
+  void finish();
+  double input_timeout_s() const;
+
+  FederateOptions options_;
+  std::shared_ptr<spdlog::logger> log_;
+  std::shared_ptr<DdsParticipant> dds_;
+  std::vector<std::shared_ptr<void>> endpoints_;   // user publishers/subscriptions
+  std::vector<std::function<void()>> flushers_;    // wait for acknowledgements at stop
+
+  std::unique_ptr<Publisher<msg::FrameDone>> frame_done_pub_;
+  std::unique_ptr<Publisher<msg::FederateStatus>> status_pub_;
+  std::unique_ptr<Subscription<msg::FrameTick>> tick_sub_;
+  std::unique_ptr<Subscription<msg::SimCommand>> command_sub_;
+
+  StepFunction step_;
+  CommandHandler command_handler_;
+  std::function<void()> stop_handler_;
+
+  // Frame state, guarded by frame_mutex_ (steps run on the middleware's listener threads).
+  mutable std::mutex frame_mutex_;
+  std::condition_variable frame_cv_;
+  std::vector<std::shared_ptr<LockstepInput>> inputs_;
+  bool accepting_ticks_ = false;
+  bool stopping_ = false;
+  bool pending_ = false;
+  msg::FrameTick pending_tick_;
+  std::uint64_t pending_since_ns_ = 0;
+  bool stepped_any_ = false;
+  std::uint64_t last_frame_ = 0;
+  float last_compute_us_ = 0.0f;
+  std::uint64_t last_latency_ns_ = 0;
+  FrameStatistics stats_;
+  util::LatencyStats window_compute_;  // for the 1 s status report
+  msg::FrameDone done_sample_;
+
+  std::mutex command_mutex_;
+  std::deque<msg::SimCommand> commands_;
+
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<int> exit_code_{0};
+  std::string stop_reason_;
+  std::uint64_t start_ns_ = 0;
+};
+
+}  // namespace fedsim::runtime

@@ -1,0 +1,50 @@
+#include "common/runtime/federate_options.hpp"
+
+#include <cstdlib>
+
+namespace fedsim::runtime {
+
+std::string default_qos_file() {
+  if (const char* env = std::getenv("FEDSIM_QOS_FILE"); env && *env) return env;
+  return FEDSIM_QOS_FILE;
+}
+
+void add_dds_options(CLI::App& app, ParticipantOptions& options) {
+  options.qos_file = default_qos_file();
+  if (const char* env = std::getenv("FEDSIM_DOMAIN"); env && *env) {
+    options.domain_id = std::atoi(env);
+  }
+  if (const char* env = std::getenv("FEDSIM_PARTICIPANT_PROFILE"); env && *env) {
+    options.participant_profile = env;
+  }
+  app.add_option("--domain", options.domain_id, "DDS domain id (env FEDSIM_DOMAIN)")
+      ->check(CLI::Range(0, 232))
+      ->capture_default_str();
+  app.add_option("--qos-file", options.qos_file, "Fast DDS XML QoS profiles (env FEDSIM_QOS_FILE)")
+      ->capture_default_str();
+  app.add_option("--participant-profile", options.participant_profile,
+                 "participant profile in the QoS file; fedsim_loopback keeps traffic on "
+                 "127.0.0.1, fedsim_lan leaves the host (env FEDSIM_PARTICIPANT_PROFILE)")
+      ->capture_default_str();
+}
+
+void add_federate_options(CLI::App& app, FederateOptions& options,
+                          const std::string& default_name) {
+  options.name = default_name;
+  app.set_config("--config", "", "read options from a TOML/INI file");
+  app.add_option("--name", options.name, "federate name, unique in the federation")
+      ->capture_default_str();
+  add_dds_options(app, options.dds);
+  app.add_option("--log-level", options.log_level, "trace|debug|info|warn|error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+      ->capture_default_str();
+  app.add_option("--duration", options.duration_s, "stop after this many seconds (0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--frames", options.max_frames, "stop after stepping this many frames (0 = no limit)");
+  app.add_option("--input-timeout", options.input_timeout_s,
+                 "lockstep: seconds to wait for a missing input before stepping without it")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+}  // namespace fedsim::runtime

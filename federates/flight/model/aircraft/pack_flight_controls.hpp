@@ -1,0 +1,47 @@
+// Flight-control section of an aircraft pack: surface travel and actuator figures (SI).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace fedsim::flight {
+
+/// A surface driven by a normalised command in -1..1 (elevator, aileron, rudder). The command
+/// maps piecewise-linearly to a demanded deflection (0 -> 0, +1 -> deflection_at_plus_one_rad,
+/// -1 -> deflection_at_minus_one_rad, as JSBSim's zero-centred aerosurface_scale); a first-order
+/// lag and a rate limit act on the demand, and the result is clipped to [min, max].
+struct SurfaceActuatorSpec {
+  double deflection_at_plus_one_rad = 0.0;
+  double deflection_at_minus_one_rad = 0.0;
+  double min_deflection_rad = 0.0;  // clip; defaults to the smaller travel end
+  double max_deflection_rad = 0.0;  // clip; defaults to the larger travel end
+  double time_constant_s = 0.0;     // 0: the surface follows the demand without lag
+  double rate_limit_radps = 0.0;    // 0: no rate limit
+
+  /// Demanded deflection for a command (clamped to -1..1 first), before lag and rate limit.
+  double demanded_deflection_rad(double command) const {
+    const double c = command > 1.0 ? 1.0 : (command < -1.0 ? -1.0 : command);
+    return c >= 0.0 ? c * deflection_at_plus_one_rad : -c * deflection_at_minus_one_rad;
+  }
+};
+
+/// A surface that moves between fixed positions at stated speeds (flaps, speedbrake, spoilers;
+/// JSBSim's "kinematic" component). Positions are normalised 0..1; moving from position i-1 to i
+/// takes transit_times_s[i-1] seconds (linear in between).
+struct KinematicSurfaceSpec {
+  std::vector<double> positions_norm;   // strictly increasing, first 0, last 1
+  std::vector<double> transit_times_s;  // one fewer than positions, each >= 0
+  double full_travel_rad = 0.0;         // deflection at position 1 (flaps; 0 if not stated)
+};
+
+/// All surfaces the pack defines; a missing surface is absent (the NASA sphere has none).
+struct FlightControlsSpec {
+  std::optional<SurfaceActuatorSpec> elevator;
+  std::optional<SurfaceActuatorSpec> aileron;
+  std::optional<SurfaceActuatorSpec> rudder;
+  std::optional<KinematicSurfaceSpec> flaps;
+  std::optional<KinematicSurfaceSpec> speedbrake;
+  std::optional<KinematicSurfaceSpec> spoilers;
+};
+
+}  // namespace fedsim::flight

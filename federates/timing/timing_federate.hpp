@@ -1,0 +1,115 @@
+// fedsim-timing: publishes the frame tick (the seed's node-1 start of frame, section 2.11).
+//
+// Subscribes: fedsim/frame_done ("frame_done", liveliness tells a dead federate),
+//             fedsim/federate_status ("status"), fedsim/sim_command ("command").
+// Publishes:  fedsim/frame_tick ("tick") every frame, fedsim/federate_status ("status").
+//
+// Modes: realtime - ticks on absolute CLOCK_MONOTONIC deadlines; a frame whose acknowledgements
+//                   are not all in by the next deadline is an overrun (counted, reported).
+//        lockstep - the next tick only after every expected federate acknowledged the current
+//                   one; as fast as possible (scale 0) or paced at `scale` x real time.
+// A federate that stops acknowledging (liveliness lost, or no acknowledgement for
+// --ack-timeout) is reported and dropped from the expected set, so lockstep never hangs.
+#pragma once
+
+#include "common/runtime/dds_participant.hpp"
+#include "common/runtime/federate_options.hpp"
+#include "common/runtime/publisher.hpp"
+#include "common/runtime/subscription.hpp"
+#include "common/util/latency_stats.hpp"
+#include "timing/ack_tracker.hpp"
+#include "timing/run_control.hpp"
+
+#include <spdlog/logger.h>
+
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fedsim::timing {
+
+struct TimingOptions {
+  runtime::FederateOptions common;
+  double rate_hz = 50.0;               // frame rate [Hz]
+  std::string mode = "realtime";       // realtime | lockstep
+  double scale = 0.0;                  // lockstep pacing: 0 = as fast as possible, 1 = real time
+  std::vector<std::string> expect;     // federates that must acknowledge every frame
+  std::string start = "run";           // run | freeze: state of the first frame
+  double ack_timeout_s = 5.0;          // a federate silent this long is declared lost
+  double resend_after_s = 0.25;        // lockstep: repeat a tick whose acks are overdue
+  double join_timeout_s = 30.0;        // wait this long for the expected federates to be ready
+  bool stop_on_lost = false;           // stop the federation when a federate is lost
+  bool shutdown_on_exit = false;       // publish a SHUTDOWN command when the timing stops
+  std::string summary_json;            // also write the summary JSON to this file
+};
+
+struct TimingSummary {
+  std::uint64_t frames = 0;
+  double wall_s = 0.0;
+  std::uint64_t overruns = 0;
+  std::uint64_t resent_ticks = 0;
+  std::vector<std::string> lost;
+  util::LatencyStats all_acked;     // tick publish -> last acknowledgement
+  util::LatencyStats period_error;  // realtime: actual - scheduled tick time
+};
+
+class TimingFederate {
+ public:
+  explicit TimingFederate(TimingOptions options);
+  ~TimingFederate();
+  /// Runs until --frames/--duration/signal/SHUTDOWN; returns the exit code.
+  int run();
+  TimingSummary summary() const;
+  std::string summary_json() const;
+
+ private:
+  void on_ack(const msg::FrameDone& ack, const runtime::fdds::SampleInfo& info);
+  void on_status(const msg::FederateStatus& status);
+  void on_command(const msg::SimCommand& command);
+  void on_liveliness(const runtime::fdds::LivelinessChangedStatus& status);
+  bool wait_for_federation();
+  void run_realtime();
+  void run_lockstep();
+  void publish_tick_locked();
+  void republish_tick_locked();
+  void mark_lost_locked(const std::string& federate, const std::string& why);
+  void check_ack_timeout_locked(std::uint64_t now_ns);
+  bool should_stop_locked() const;
+  bool frames_exhausted_locked() const;
+  void publish_status(msg::FederateState state, const std::string& message);
+
+  TimingOptions options_;
+  std::shared_ptr<spdlog::logger> log_;
+  std::shared_ptr<runtime::DdsParticipant> dds_;
+  std::unique_ptr<runtime::Publisher<msg::FrameTick>> tick_pub_;
+  std::unique_ptr<runtime::Publisher<msg::FederateStatus>> status_pub_;
+  std::unique_ptr<runtime::Publisher<msg::SimCommand>> command_pub_;
+  std::unique_ptr<runtime::Subscription<msg::FrameDone>> ack_sub_;
+  std::unique_ptr<runtime::Subscription<msg::FederateStatus>> status_sub_;
+  std::unique_ptr<runtime::Subscription<msg::SimCommand>> command_sub_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable cv_;
+  AckTracker tracker_;
+  RunControl run_control_;
+  msg::FrameTick tick_;
+  bool lockstep_ = false;
+  bool started_ = false;
+  bool stopping_ = false;
+  std::uint64_t ticks_published_ = 0;
+  std::uint64_t tick_publish_ns_ = 0;
+  std::uint64_t last_resend_ns_ = 0;
+  std::uint64_t start_ns_ = 0;
+  std::uint64_t end_ns_ = 0;
+  std::set<std::string> ready_;
+  std::map<std::string, std::string> writer_to_federate_;  // publication handle -> name
+  std::map<std::string, std::uint64_t> last_ack_ns_;       // federate -> time of its last ack
+  TimingSummary summary_;
+  std::string stop_reason_;
+  int exit_code_ = 0;
+};
+
+}  // namespace fedsim::timing
