@@ -90,6 +90,7 @@ void Federate::handle_tick(const msg::FrameTick& tick) {
     if (tick.frame() == last_frame_) publish_done_locked(last_frame_, last_compute_us_, last_latency_ns_);
     return;
   }
+  if (pending_ && pending_tick_.frame() == tick.frame()) return;  // a repeat of the pending tick
   if (pending_) ++stats_.skipped_ticks;
   pending_tick_ = tick;
   pending_ = true;

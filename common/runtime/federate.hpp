@@ -114,6 +114,23 @@ class Federate {
     }
   }
 
+  /// Registers a lockstep input for a subscription the runtime did not create (dynamic types
+  /// in the recorder). Call the returned function with the frame of every sample received.
+  std::function<void(std::uint64_t)> add_lockstep_input(const std::string& topic,
+                                                        std::function<int()> matched_writers) {
+    auto input = std::make_shared<LockstepInput>();
+    input->topic = topic;
+    input->matched_writers = std::move(matched_writers);
+    {
+      std::lock_guard lock(frame_mutex_);
+      inputs_.push_back(input);
+    }
+    return [this, input](std::uint64_t frame) {
+      input->last_frame.store(static_cast<std::int64_t>(frame));
+      on_lockstep_input();
+    };
+  }
+
   /// Commands (other than SHUTDOWN, which the runtime handles) are delivered inside the frame,
   /// just before the step, so a model never sees a command in the middle of a step.
   void on_command(CommandHandler handler) { command_handler_ = std::move(handler); }

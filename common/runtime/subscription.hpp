@@ -9,6 +9,8 @@
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -54,6 +56,24 @@ class Subscription : public fdds::DataReaderListener {
     out = latest_;
     return true;
   }
+  /// Lockstep reads: the newest sample stamped with a frame before `frame` (the sample of frame
+  /// N-1 while stepping frame N, even if frame N's sample has already arrived). Only for
+  /// messages with a FrameStamp.
+  bool latest_before(std::uint64_t frame, T& out) const
+    requires Stamped<T>
+  {
+    std::lock_guard lock(latest_mutex_);
+    const T* best = nullptr;
+    for (std::size_t i = 0; i < ring_count_; ++i) {
+      const T& s = ring_[i];
+      if (s.stamp().frame() < frame && (!best || s.stamp().frame() > best->stamp().frame())) {
+        best = &s;
+      }
+    }
+    if (!best) return false;
+    out = *best;
+    return true;
+  }
   bool has_sample() const { return received_.load() > 0; }
   std::uint64_t received_count() const { return received_.load(); }
   int matched_writers() const { return matched_.load(); }
@@ -78,6 +98,11 @@ class Subscription : public fdds::DataReaderListener {
         std::lock_guard lock(latest_mutex_);
         latest_ = scratch_;
         has_latest_ = true;
+        if constexpr (Stamped<T>) {
+          ring_[ring_next_] = scratch_;
+          ring_next_ = (ring_next_ + 1) % ring_.size();
+          ring_count_ = std::min(ring_count_ + 1, ring_.size());
+        }
       }
       received_.fetch_add(1);
       if (on_sample_) on_sample_(scratch_, info);
@@ -107,6 +132,9 @@ class Subscription : public fdds::DataReaderListener {
   mutable std::mutex latest_mutex_;
   T latest_;
   bool has_latest_ = false;
+  std::array<T, 4> ring_{};  // last few stamped samples, for latest_before()
+  std::size_t ring_next_ = 0;
+  std::size_t ring_count_ = 0;
   std::atomic<std::uint64_t> received_{0};
   std::atomic<int> matched_{0};
   std::atomic<std::uint64_t> deadline_misses_{0};

@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
       if (trace.is_open()) {
         long long input_frame = -1;
         float elevator = 0.0f;
-        if (controls_sub && controls_sub->latest(controls)) {
+        if (controls_sub && controls_sub->latest_before(ctx.frame, controls)) {
           input_frame = static_cast<long long>(controls.stamp().frame());
           elevator = controls.elevator();
         }

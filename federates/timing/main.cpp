@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
                  "seconds to wait for the expected federates to be ready")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--settle", options.settle_s,
+                 "seconds to let discovery finish once every federate is ready")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_flag("--stop-on-lost", options.stop_on_lost, "stop when a federate is lost");
   app.add_flag("--shutdown-on-exit", options.shutdown_on_exit,
                "tell every federate to stop when the timing federate stops");

@@ -75,15 +75,29 @@ TimingFederate::~TimingFederate() {
   command_sub_->close();
 }
 
+// Never called with mutex_ held: writing delivers to this process's own status reader, whose
+// handler takes mutex_ (lock order: DDS entity locks, then mutex_).
 void TimingFederate::publish_status(msg::FederateState state, const std::string& message) {
   msg::FederateStatus status;
   status.federate(options_.common.name);
   status.state(state);
   status.message(message.substr(0, 127));
   status.pid(static_cast<uint32_t>(getpid()));
-  status.frames_done(summary().frames);
-  status.overruns(summary().overruns);
+  {
+    std::lock_guard lock(mutex_);
+    status.frames_done(summary_.frames);
+    status.overruns(summary_.overruns);
+  }
   status_pub_->publish(status);
+}
+
+void TimingFederate::flush_status_messages() {
+  std::vector<std::string> messages;
+  {
+    std::lock_guard lock(mutex_);
+    messages.swap(status_messages_);
+  }
+  for (const auto& m : messages) publish_status(msg::FEDERATE_RUNNING, m);
 }
 
 void TimingFederate::on_status(const msg::FederateStatus& status) {
@@ -158,7 +172,7 @@ void TimingFederate::mark_lost_locked(const std::string& federate, const std::st
   summary_.lost.push_back(federate);
   log_->error("federate={} lost at frame={}: {}", federate, tracker_.frame(), why);
   const bool completed = tracker_.remove(federate);
-  publish_status(msg::FEDERATE_RUNNING, "lost " + federate + ": " + why);
+  status_messages_.push_back("lost " + federate + ": " + why);  // published by the loop
   if (options_.stop_on_lost) {
     stopping_ = true;
     stop_reason_ = "federate " + federate + " lost";
@@ -229,7 +243,12 @@ bool TimingFederate::wait_for_federation() {
       if (!ready_.count(name)) missing.push_back(name);
     }
     const bool matched = tick_pub_->matched_readers() >= n && ack_sub_->matched_writers() >= n;
-    if (missing.empty() && matched) return true;
+    if (missing.empty() && matched) {
+      // Discovery is two-sided: give the other halves of the matches a moment to complete so
+      // the first frames' samples reach every reader.
+      cv_.wait_for(lock, std::chrono::milliseconds(static_cast<int>(options_.settle_s * 1000)));
+      return true;
+    }
     if (runtime::shutdown_requested() || stopping_) return false;
     if (std::chrono::steady_clock::now() > until) {
       log_->error("federates not ready after {} s: {}{}", options_.join_timeout_s,
@@ -286,7 +305,7 @@ void TimingFederate::run_realtime() {
   for (std::uint64_t n = 0;; ++n) {
     const std::uint64_t deadline = first + n * period_ns;
     util::sleep_until_ns(deadline);
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
     if (should_stop_locked()) break;
     const std::uint64_t now = util::monotonic_ns();
     if (n > 0 && !tracker_.complete()) {
@@ -299,6 +318,10 @@ void TimingFederate::run_realtime() {
     }
     if (n > 0) summary_.period_error.add_ns(now - deadline);
     publish_tick_locked();
+    if (!status_messages_.empty()) {
+      lock.unlock();
+      flush_status_messages();
+    }
   }
   // Give the last frame's acknowledgements a moment to arrive for the statistics.
   std::unique_lock lock(mutex_);
@@ -312,6 +335,11 @@ void TimingFederate::run_lockstep() {
   publish_tick_locked();
   for (;;) {
     cv_.wait_for(lock, std::chrono::milliseconds(10));
+    if (!status_messages_.empty()) {
+      lock.unlock();
+      flush_status_messages();
+      lock.lock();
+    }
     const std::uint64_t now = util::monotonic_ns();
     if (tracker_.complete()) {
       if (should_stop_locked()) break;

@@ -41,6 +41,7 @@ struct TimingOptions {
   double ack_timeout_s = 5.0;          // a federate silent this long is declared lost
   double resend_after_s = 0.25;        // lockstep: repeat a tick whose acks are overdue
   double join_timeout_s = 30.0;        // wait this long for the expected federates to be ready
+  double settle_s = 0.3;               // after everyone is ready, let discovery finish
   bool stop_on_lost = false;           // stop the federation when a federate is lost
   bool shutdown_on_exit = false;       // publish a SHUTDOWN command when the timing stops
   std::string summary_json;            // also write the summary JSON to this file
@@ -80,6 +81,7 @@ class TimingFederate {
   bool should_stop_locked() const;
   bool frames_exhausted_locked() const;
   void publish_status(msg::FederateState state, const std::string& message);
+  void flush_status_messages();
 
   TimingOptions options_;
   std::shared_ptr<spdlog::logger> log_;
@@ -108,6 +110,7 @@ class TimingFederate {
   std::map<std::string, std::string> writer_to_federate_;  // publication handle -> name
   std::map<std::string, std::uint64_t> last_ack_ns_;       // federate -> time of its last ack
   TimingSummary summary_;
+  std::vector<std::string> status_messages_;  // queued under mutex_, published outside it
   std::string stop_reason_;
   int exit_code_ = 0;
 };

@@ -1,11 +1,13 @@
-// Aircraft-pack loader: top level, metadata, geometry, mass and limits (format in
-// data/aircraft/README.md). Every error reads "file:line: field: problem".
+// Aircraft-pack loader: top level, metadata, geometry, mass, limits (data/aircraft/README.md).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
 #include "flight/model/aircraft/aircraft_pack.hpp"
 #include "flight/model/aircraft/pack_reading.hpp"
+#include "flight/model/aircraft/pack_to_systems.hpp"
 
 namespace fedsim::flight {
 
@@ -144,6 +146,48 @@ LimitsSpec read_limits(const ConfigNode& node) {
   return l;
 }
 
+// The systems models validate their own Params; a pack they reject is refused at load time,
+// pointing at the section that fills them.
+template <typename Build>
+void accepted_by_model(const ConfigNode& section, Build build) {
+  try {
+    build();
+  } catch (const std::invalid_argument& e) {
+    section.fail(std::string("rejected by the systems model: ") + e.what());
+  }
+}
+
+void check_against_systems_models(const AircraftPack& pack, const ConfigNode& root) {
+  const ConfigNode controls = root.child("flight_controls");
+  const FlightControlsSpec& fc = pack.flight_controls;
+  const std::pair<const char*, const std::optional<SurfaceActuatorSpec>*> surfaces[] = {
+      {"elevator", &fc.elevator}, {"aileron", &fc.aileron}, {"rudder", &fc.rudder}};
+  for (const auto& [key, surface] : surfaces) {
+    if (*surface) accepted_by_model(controls.child(key), [&] { actuator_params(**surface); });
+  }
+  const std::pair<const char*, const std::optional<KinematicSurfaceSpec>*> kinematics[] = {
+      {"flaps", &fc.flaps}, {"speedbrake", &fc.speedbrake}, {"spoilers", &fc.spoilers}};
+  for (const auto& [key, surface] : kinematics) {
+    if (*surface) {
+      accepted_by_model(controls.child(key), [&] { kinematic_actuator_params(**surface); });
+    }
+  }
+  const auto engine_nodes = root.child("propulsion").child("engines").items();
+  for (std::size_t i = 0; i < pack.engines.size(); ++i) {
+    const EngineSpec& engine = pack.engines[i];
+    accepted_by_model(engine_nodes[i], [&] {
+      if (engine.type == EngineType::turbofan) {
+        turbofan_params(engine);
+      } else {
+        piston_powerplant_params(engine);
+      }
+    });
+  }
+  accepted_by_model(root.child("landing_gear"),
+                    [&] { landing_gear_params(pack.landing_gear); });
+  accepted_by_model(root.child("mass"), [&] { mass_balance_params(pack.mass, pack.engines); });
+}
+
 AircraftPack read_pack(const ConfigNode& root) {
   if (!root.yaml().IsMap()) root.fail("an aircraft pack is a YAML map");
   root.reject_unknown_keys({"fedsim_aircraft_pack", "metadata", "geometry", "mass",
@@ -162,6 +206,7 @@ AircraftPack read_pack(const ConfigNode& root) {
   pack.engines = read_propulsion(root.child("propulsion"), pack.mass);
   pack.landing_gear = read_landing_gear(root.child("landing_gear"));
   pack.limits = read_limits(root.child("limits"));
+  check_against_systems_models(pack, root);
   return pack;
 }
 

@@ -8,7 +8,7 @@
 namespace fedsim::flight {
 
 enum class ContactType { wheel, structure };
-enum class BrakeGroup { none, left, right, center };
+enum class BrakeGroup { none, left, right };
 
 /// One ground contact (seed 3.9): a spring-damper strut at a point, with friction.
 struct GearContactSpec {

@@ -50,11 +50,18 @@ struct TurbofanSpec {
   double max_thrust_n = 0.0;         // static sea-level maximum (military) thrust
   double bypass_ratio = 0.0;
   double tsfc_kg_per_ns = 0.0;       // thrust-specific fuel consumption, kg/(N s)
+  double tsfc_per_mach = 0.0;        // relative TSFC rise per unit Mach
+  double min_fuel_flow_kgps = 0.0;   // fuel flow floor while running
   double bleed_fraction = 0.0;       // fraction of core flow bled off
   double idle_n1_pct = 0.0;
   double idle_n2_pct = 0.0;
   double max_n1_pct = 100.0;
   double max_n2_pct = 100.0;
+  // Spools follow their command as first-order lags with these time constants.
+  double n1_spool_up_time_constant_s = 0.0;
+  double n1_spool_down_time_constant_s = 0.0;
+  double n2_spool_up_time_constant_s = 0.0;
+  double n2_spool_down_time_constant_s = 0.0;
   Table2D idle_thrust_fraction;      // (mach, density_altitude_m)
   Table2D max_thrust_fraction;       // (mach, density_altitude_m)
 };
@@ -68,7 +75,7 @@ struct EngineSpec {
   EngineType type = EngineType::piston_propeller;
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d orientation_rad = Eigen::Vector3d::Zero();  // roll, pitch, yaw
-  std::vector<int> fuel_tanks;  // indices into MassSpec::fuel_tanks that feed this engine
+  std::vector<int> fuel_tanks;  // indices into MassSpec::fuel_tanks feeding it (at least one)
   PistonEngineSpec piston;      // valid for piston_propeller
   PropellerSpec propeller;      // valid for piston_propeller
   TurbofanSpec turbofan;        // valid for turbofan

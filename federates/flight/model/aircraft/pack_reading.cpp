@@ -2,6 +2,7 @@
 #include "flight/model/aircraft/pack_reading.hpp"
 
 #include <set>
+#include <sstream>
 
 namespace fedsim::flight::pack_detail {
 
@@ -19,8 +20,10 @@ std::vector<double> read_breakpoints(const ConfigNode& parent, const std::string
   for (const auto& item : items) {
     const double x = item.as_number();
     if (!out.empty() && !(x > out.back())) {
-      item.fail("breakpoints must be strictly increasing (" + std::to_string(x) +
-                " does not exceed " + std::to_string(out.back()) + ")");
+      std::ostringstream why;
+      why << "breakpoints must be strictly increasing (" << x << " does not exceed "
+          << out.back() << ")";
+      item.fail(why.str());
     }
     out.push_back(x);
   }

@@ -136,20 +136,29 @@ PropellerSpec read_propeller(const ConfigNode& node) {
 }
 
 TurbofanSpec read_turbofan(const ConfigNode& node) {
-  node.reject_unknown_keys({"max_thrust_n", "bypass_ratio", "tsfc_kg_per_n_h", "bleed_fraction",
-                            "idle_n1_pct", "idle_n2_pct", "max_n1_pct", "max_n2_pct",
+  node.reject_unknown_keys({"max_thrust_n", "bypass_ratio", "tsfc_kg_per_n_h", "tsfc_per_mach",
+                            "min_fuel_flow_kg_per_s", "bleed_fraction", "idle_n1_pct",
+                            "idle_n2_pct", "max_n1_pct", "max_n2_pct",
+                            "n1_spool_up_time_constant_s", "n1_spool_down_time_constant_s",
+                            "n2_spool_up_time_constant_s", "n2_spool_down_time_constant_s",
                             "idle_thrust_fraction", "max_thrust_fraction"});
   TurbofanSpec t;
   t.max_thrust_n = node.number("max_thrust_n", 1.0, 1e7);
   t.bypass_ratio = node.number("bypass_ratio", 0.0, 30.0);
-  t.tsfc_kg_per_ns = node.number("tsfc_kg_per_n_h", 0.0, 1.0) / kHourToS;
+  t.tsfc_kg_per_ns = node.number("tsfc_kg_per_n_h", 1e-6, 1.0) / kHourToS;
+  t.tsfc_per_mach = node.number_or("tsfc_per_mach", 0.0, 0.0, 10.0);
+  t.min_fuel_flow_kgps = node.number_or("min_fuel_flow_kg_per_s", 0.0, 0.0, 100.0);
   t.bleed_fraction = node.number_or("bleed_fraction", 0.0, 0.0, 0.5);
-  t.idle_n1_pct = node.number("idle_n1_pct", 0.0, 120.0);
-  t.idle_n2_pct = node.number("idle_n2_pct", 0.0, 120.0);
+  t.idle_n1_pct = node.number("idle_n1_pct", 1.0, 120.0);
+  t.idle_n2_pct = node.number("idle_n2_pct", 1.0, 120.0);
   t.max_n1_pct = node.number_or("max_n1_pct", 100.0, 1.0, 120.0);
   t.max_n2_pct = node.number_or("max_n2_pct", 100.0, 1.0, 120.0);
   if (!(t.idle_n1_pct < t.max_n1_pct)) node.fail_at("max_n1_pct", "must exceed idle_n1_pct");
   if (!(t.idle_n2_pct < t.max_n2_pct)) node.fail_at("max_n2_pct", "must exceed idle_n2_pct");
+  t.n1_spool_up_time_constant_s = node.number("n1_spool_up_time_constant_s", 1e-3, 100.0);
+  t.n1_spool_down_time_constant_s = node.number("n1_spool_down_time_constant_s", 1e-3, 100.0);
+  t.n2_spool_up_time_constant_s = node.number("n2_spool_up_time_constant_s", 1e-3, 100.0);
+  t.n2_spool_down_time_constant_s = node.number("n2_spool_down_time_constant_s", 1e-3, 100.0);
   t.idle_thrust_fraction = read_table_2d(node, "idle_thrust_fraction", "mach",
                                          "density_altitude_m");
   t.max_thrust_fraction = read_table_2d(node, "max_thrust_fraction", "mach",
@@ -171,8 +180,9 @@ EngineSpec read_engine(const ConfigNode& node, std::size_t tank_count) {
   e.name = node.string("name");
   e.position_m = read_vector3(node, "position_m");
   if (node.has("orientation_deg")) e.orientation_rad = read_vector3(node, "orientation_deg") * kDegToRad;
-  if (node.has("fuel_tanks")) {
+  {
     const auto items = node.child("fuel_tanks").items();
+    if (items.empty()) node.fail_at("fuel_tanks", "an engine needs at least one fuel tank");
     for (const auto& item : items) {
       const double index = item.as_number();
       if (index != std::floor(index) || index < 0 || index >= static_cast<double>(tank_count)) {
@@ -208,12 +218,10 @@ GearContactSpec read_contact(const ConfigNode& node) {
   c.dynamic_friction = node.number("dynamic_friction", 0.0, 5.0);
   c.rolling_friction = node.number_or("rolling_friction", 0.0, 0.0, 5.0);
   c.max_steer_rad = node.number_or("max_steer_deg", 0.0, 0.0, 180.0) * kDegToRad;
-  const std::string brake =
-      node.choice_or("brake_group", {"none", "left", "right", "center"}, "none");
+  const std::string brake = node.choice_or("brake_group", {"none", "left", "right"}, "none");
   c.brake_group = brake == "left"    ? BrakeGroup::left
                   : brake == "right" ? BrakeGroup::right
-                  : brake == "center" ? BrakeGroup::center
-                                      : BrakeGroup::none;
+                                     : BrakeGroup::none;
   c.retractable = node.boolean_or("retractable", false);
   if (c.type == ContactType::structure && (c.retractable || c.max_steer_rad > 0.0 ||
                                            c.brake_group != BrakeGroup::none)) {

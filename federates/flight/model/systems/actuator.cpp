@@ -17,7 +17,8 @@ void Actuator::Params::validate() const {
   pc::finite(deflection_at_minus_one_rad, "deflection_at_minus_one_rad");
   pc::non_negative(time_constant_s, "time_constant_s");
   if (!(rate_limit_radps > 0.0)) pc::fail("rate_limit_radps", "must be positive", rate_limit_radps);
-  if (std::isnan(position_min_rad)) pc::fail("position_min_rad", "must not be NaN", position_min_rad);
+  if (std::isnan(position_min_rad))
+    pc::fail("position_min_rad", "must not be NaN", position_min_rad);
   if (!(position_max_rad > position_min_rad)) {
     pc::fail("position_max_rad", "must exceed position_min_rad", position_max_rad);
   }

@@ -19,16 +19,18 @@ constexpr double kLowestRpm = 1.0;            // keeps N_idle / N finite at a st
 double clamp01(double x) { return std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0); }
 
 // Shaft power (W) of a torque at a given speed.
-double power_w(double torque_nm, double rpm) { return torque_nm * rpm * 2.0 * std::numbers::pi / 60.0; }
+double power_w(double torque_nm, double rpm) {
+  return torque_nm * rpm * 2.0 * std::numbers::pi / 60.0;
+}
 }  // namespace
 
 Table1D PistonEngine::Params::default_mixture_efficiency() {
   // Fuel/air mass ratio -> power factor. D. Luff's correlation, as tabulated in JSBSim's
   // FGPiston (public domain figures for a Lycoming-class engine).
-  return Table1D({0.05000, 0.05137, 0.05179, 0.05430, 0.05842, 0.06312, 0.06942, 0.07786,
-                  0.08845, 0.09270, 0.10120, 0.11455, 0.12158, 0.12435, 0.12500},
-                 {0.00000, 0.00862, 0.21552, 0.48276, 0.70690, 0.83621, 0.93103, 1.00000,
-                  1.00000, 0.98276, 0.93103, 0.72414, 0.45690, 0.23276, 0.00000});
+  return Table1D({0.05000, 0.05137, 0.05179, 0.05430, 0.05842, 0.06312, 0.06942, 0.07786, 0.08845,
+                  0.09270, 0.10120, 0.11455, 0.12158, 0.12435, 0.12500},
+                 {0.00000, 0.00862, 0.21552, 0.48276, 0.70690, 0.83621, 0.93103, 1.00000, 1.00000,
+                  0.98276, 0.93103, 0.72414, 0.45690, 0.23276, 0.00000});
 }
 
 void PistonEngine::Params::validate() const {
@@ -55,6 +57,7 @@ void PistonEngine::Params::validate() const {
   pc::positive(bsfc_kgpj, "bsfc_kgpj");
   pc::positive(best_power_fuel_air_ratio, "best_power_fuel_air_ratio");
   pc::positive(full_rich_fuel_air_ratio, "full_rich_fuel_air_ratio");
+  pc::in_range(idle_cutoff_mixture, 0.0, 0.5, "idle_cutoff_mixture");
   pc::not_empty(mixture_efficiency, "mixture_efficiency");
   const double best = mixture_efficiency(best_power_fuel_air_ratio);
   if (!(best > 0.0)) {
@@ -78,7 +81,8 @@ PistonEngine::PistonEngine(Params params) : params_(std::move(params)) {
 
 double PistonEngine::friction_mep_pa(double rpm) const {
   const double krpm = std::max(rpm, 0.0) / 1000.0;
-  return params_.fmep_pa + params_.fmep_per_krpm_pa * krpm + params_.fmep_per_krpm2_pa * krpm * krpm;
+  return params_.fmep_pa + params_.fmep_per_krpm_pa * krpm +
+         params_.fmep_per_krpm2_pa * krpm * krpm;
 }
 
 double PistonEngine::mep_to_torque_nm(double mep_pa) const {
@@ -108,10 +112,11 @@ PistonEngine::Outputs PistonEngine::evaluate(const Inputs& in) const {
 
   // Charge density relative to the rated point (SAE J1349 temperature correction).
   const double temperature_k = std::max(in.ambient_temperature_k, 1.0);
-  const double charge = (out.manifold_pressure_pa / rated_map_pa_) *
-                        std::sqrt(kSeaLevelTemperatureK / temperature_k);
+  const double charge =
+      (out.manifold_pressure_pa / rated_map_pa_) * std::sqrt(kSeaLevelTemperatureK / temperature_k);
 
-  const bool burning = in.running && !in.failed;
+  const bool burning =
+      in.running && !in.failed && !(clamp01(in.mixture) < params_.idle_cutoff_mixture);
   if (burning) {
     out.fuel_air_ratio = fuel_air_ratio(in);
     out.mixture_efficiency = params_.mixture_efficiency(out.fuel_air_ratio);

@@ -36,7 +36,8 @@ namespace fedsim::flight {
 ///  - Mixture (eq. 3.116): the metered fuel/air ratio is the full-rich sea-level ratio
 ///    divided by (2 - ml^2) (the lever acts mostly near its forward end), times
 ///    sqrt(rho_sl / rho): a pressure-metered fuel system enriches as density falls, which is
-///    why pilots lean with altitude. Lever 0 halves the ratio: below the lean limit, no power.
+///    why pilots lean with altitude. Lever 0 halves the ratio (below the lean limit at low
+///    altitude); levers below idle_cutoff_mixture are the idle cut-off detent: no fuel.
 ///  - Fuel flow = F/A * air mass flow; the air flow scales with MAP, sqrt(T_sl/T) and N from
 ///    its rated value, which is set by bsfc at the rated point with best-power mixture.
 ///  - `running` false or `failed` true: no combustion, no fuel; losses remain (a stopped or
@@ -64,6 +65,8 @@ class PistonEngine {
     double best_power_fuel_air_ratio = 0.080;
     /// Fuel/air mass ratio metered with the mixture lever at 1 in sea-level air.
     double full_rich_fuel_air_ratio = 0.088;
+    /// Mixture lever positions below this are the idle cut-off: fuel off.
+    double idle_cutoff_mixture = 0.02;
     /// Power factor as a function of fuel/air mass ratio (1 at best power, 0 at the lean and
     /// rich misfire limits). Default: the Luff correlation used by JSBSim's piston engine.
     Table1D mixture_efficiency = default_mixture_efficiency();
@@ -85,12 +88,12 @@ class PistonEngine {
 
   struct Outputs {
     double manifold_pressure_pa = 0.0;
-    double fuel_air_ratio = 0.0;       ///< metered ratio (0 when not burning)
-    double mixture_efficiency = 0.0;   ///< eta_mix at that ratio
-    double combustion_torque_nm = 0.0; ///< from IMEP, drives the shaft (>= 0)
-    double loss_torque_nm = 0.0;       ///< pumping + friction, opposes rotation (>= 0)
-    double brake_torque_nm = 0.0;      ///< combustion - loss (negative when windmilled)
-    double brake_power_w = 0.0;        ///< brake torque * shaft speed
+    double fuel_air_ratio = 0.0;        ///< metered ratio (0 when not burning)
+    double mixture_efficiency = 0.0;    ///< eta_mix at that ratio
+    double combustion_torque_nm = 0.0;  ///< from IMEP, drives the shaft (>= 0)
+    double loss_torque_nm = 0.0;        ///< pumping + friction, opposes rotation (>= 0)
+    double brake_torque_nm = 0.0;       ///< combustion - loss (negative when windmilled)
+    double brake_power_w = 0.0;         ///< brake torque * shaft speed
     double fuel_flow_kgps = 0.0;
   };
 

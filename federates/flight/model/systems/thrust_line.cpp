@@ -15,7 +15,8 @@ Eigen::Vector3d ThrustLine::axis_b() const {
 
 void ThrustLine::validate(const std::string& prefix) const {
   param_checks::finite(position_m, prefix + "position_m");
-  param_checks::in_range(pitch_rad, -std::numbers::pi / 2, std::numbers::pi / 2, prefix + "pitch_rad");
+  param_checks::in_range(pitch_rad, -std::numbers::pi / 2, std::numbers::pi / 2,
+                         prefix + "pitch_rad");
   param_checks::in_range(yaw_rad, -std::numbers::pi, std::numbers::pi, prefix + "yaw_rad");
 }
 

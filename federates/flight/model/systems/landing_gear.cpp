@@ -1,0 +1,202 @@
+// Landing gear and other ground contacts: spring-damper struts on a level runway plane with
+// rolling, braking and cornering friction.
+#include "flight/model/systems/landing_gear.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "flight/model/systems/param_checks.hpp"
+
+namespace fedsim::flight {
+
+namespace {
+const Eigen::Vector3d kUpNed(0.0, 0.0, -1.0);
+
+double clamp_or_zero(double x, double lo, double hi) {
+  return std::isnan(x) ? 0.0 : std::clamp(x, lo, hi);
+}
+
+// Linear blend of Coulomb friction to zero inside the viscous band around standstill.
+double blend(double speed_mps, double band_mps) {
+  return std::min(std::abs(speed_mps) / band_mps, 1.0);
+}
+
+// Unit ground-plane (horizontal) vectors along and to the right of a wheel's heading.
+struct GroundAxes {
+  Eigen::Vector3d along;
+  Eigen::Vector3d right;
+};
+
+GroundAxes wheel_ground_axes(const Eigen::Matrix3d& dcm_ned_to_body, double steer_rad) {
+  const Eigen::Vector3d heading_b(std::cos(steer_rad), std::sin(steer_rad), 0.0);
+  const Eigen::Vector3d heading_ned = dcm_ned_to_body.transpose() * heading_b;
+  Eigen::Vector3d along(heading_ned.x(), heading_ned.y(), 0.0);
+  const double n = along.norm();
+  // A wheel pointing straight up or down has no ground heading; pick north (no rolling
+  // contact exists in that attitude anyway).
+  along = n > 1e-9 ? Eigen::Vector3d(along / n) : Eigen::Vector3d::UnitX();
+  return {along, Eigen::Vector3d(-along.y(), along.x(), 0.0)};
+}
+
+std::string field(std::size_t i, const char* name) {
+  return "contacts[" + std::to_string(i) + "]." + name;
+}
+}  // namespace
+
+void LandingGear::Params::validate() const {
+  namespace pc = param_checks;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    pc::finite(c.position_m, field(i, "position_m"));
+    pc::positive(c.spring_npm, field(i, "spring_npm"));
+    pc::non_negative(c.damping_compression_nspm, field(i, "damping_compression_nspm"));
+    pc::non_negative(c.damping_rebound_nspm, field(i, "damping_rebound_nspm"));
+    pc::non_negative(c.static_friction, field(i, "static_friction"));
+    pc::in_range(c.dynamic_friction, 0.0, c.static_friction, field(i, "dynamic_friction"));
+    pc::in_range(c.rolling_friction, 0.0, c.static_friction, field(i, "rolling_friction"));
+    pc::in_range(c.max_steer_rad, 0.0, std::numbers::pi / 2, field(i, "max_steer_rad"));
+    pc::positive(c.cornering_saturation_slip_rad, field(i, "cornering_saturation_slip_rad"));
+  }
+  pc::positive(friction_blend_speed_mps, "friction_blend_speed_mps");
+}
+
+LandingGear::LandingGear(Params params) : params_((params.validate(), std::move(params))) {
+  outputs_.contacts.resize(params_.contacts.size());
+  reset();
+}
+
+void LandingGear::reset() {
+  outputs_.force_b_n.setZero();
+  outputs_.moment_datum_b_nm.setZero();
+  outputs_.weight_on_wheels = false;
+  std::fill(outputs_.contacts.begin(), outputs_.contacts.end(), ContactOutput{});
+}
+
+double LandingGear::damping_ratio(double spring_npm, double damping_nspm,
+                                  double supported_mass_kg) {
+  return damping_nspm / (2.0 * std::sqrt(spring_npm * supported_mass_kg));
+}
+
+void LandingGear::contact_kinematics(const Params& params, const Eigen::Vector3d& cg_ned_m,
+                                     const Eigen::Vector3d& cg_velocity_ned_mps,
+                                     const Eigen::Matrix3d& dcm_ned_to_body,
+                                     const Eigen::Vector3d& omega_b_radps,
+                                     const Eigen::Vector3d& cg_m,
+                                     std::span<ContactKinematics> out) {
+  if (out.size() != params.contacts.size()) {
+    throw std::invalid_argument("LandingGear::contact_kinematics: output size mismatch");
+  }
+  const Eigen::Matrix3d body_to_ned = dcm_ned_to_body.transpose();
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Eigen::Vector3d arm_b = params.contacts[i].position_m - cg_m;
+    out[i].position_ned_m = cg_ned_m + body_to_ned * arm_b;
+    out[i].velocity_ned_mps = cg_velocity_ned_mps + body_to_ned * omega_b_radps.cross(arm_b);
+  }
+}
+
+double LandingGear::brake_for(const Contact& contact, const Inputs& in) const {
+  switch (contact.brake_group) {
+    case BrakeGroup::kLeft:
+      return clamp_or_zero(in.brake_left, 0.0, 1.0);
+    case BrakeGroup::kRight:
+      return clamp_or_zero(in.brake_right, 0.0, 1.0);
+    case BrakeGroup::kNone:
+      break;
+  }
+  return 0.0;
+}
+
+Eigen::Vector3d LandingGear::wheel_friction_ned(const Contact& contact,
+                                                const Eigen::Vector3d& velocity_ned,
+                                                const Eigen::Matrix3d& dcm_ned_to_body,
+                                                double steer_rad, double brake,
+                                                double normal_n) const {
+  const GroundAxes axes = wheel_ground_axes(dcm_ned_to_body, steer_rad);
+  const double v_roll = velocity_ned.dot(axes.along);
+  const double v_side = velocity_ned.dot(axes.right);
+  const double band = params_.friction_blend_speed_mps;
+
+  const double mu_roll = contact.rolling_friction * (1.0 - brake) + contact.static_friction * brake;
+  const double f_roll = -std::copysign(mu_roll * normal_n * blend(v_roll, band), v_roll);
+
+  const double slip_rad = std::atan2(v_side, std::abs(v_roll));
+  const double side_fraction =
+      std::min(std::abs(slip_rad) / contact.cornering_saturation_slip_rad, 1.0);
+  const double ground_speed = std::hypot(v_roll, v_side);
+  const double f_side = -std::copysign(
+      contact.dynamic_friction * side_fraction * normal_n * blend(ground_speed, band), v_side);
+
+  return f_roll * axes.along + f_side * axes.right;
+}
+
+Eigen::Vector3d LandingGear::sliding_friction_ned(const Contact& contact,
+                                                  const Eigen::Vector3d& velocity_ned,
+                                                  double normal_n) const {
+  const Eigen::Vector3d v_ground(velocity_ned.x(), velocity_ned.y(), 0.0);
+  const double speed = v_ground.norm();
+  // mu N v / max(|v|, band): Coulomb outside the band, viscous inside.
+  return -contact.dynamic_friction * normal_n * v_ground /
+         std::max(speed, params_.friction_blend_speed_mps);
+}
+
+LandingGear::ContactOutput LandingGear::evaluate_contact(const Contact& contact,
+                                                         const ContactKinematics& kin,
+                                                         const Inputs& in) const {
+  ContactOutput out;
+  const bool wheel = contact.type == ContactType::kWheel;
+  const bool deployed = !wheel || !contact.retractable || in.gear_down;
+  out.compression_m = kin.position_ned_m.z() + in.runway_elevation_m;
+  out.compression_rate_mps = kin.velocity_ned_mps.z();
+  if (!deployed || !(out.compression_m > 0.0) || !std::isfinite(out.compression_rate_mps)) {
+    out.compression_m = std::max(out.compression_m, 0.0);
+    if (std::isnan(out.compression_m)) out.compression_m = 0.0;
+    return out;
+  }
+  out.in_contact = true;
+  const double damping = out.compression_rate_mps >= 0.0 ? contact.damping_compression_nspm
+                                                         : contact.damping_rebound_nspm;
+  out.normal_force_n =
+      std::max(contact.spring_npm * out.compression_m + damping * out.compression_rate_mps, 0.0);
+  out.steer_angle_rad = wheel ? clamp_or_zero(in.steering, -1.0, 1.0) * contact.max_steer_rad : 0.0;
+
+  Eigen::Vector3d friction_ned =
+      wheel ? wheel_friction_ned(contact, kin.velocity_ned_mps, in.dcm_ned_to_body,
+                                 out.steer_angle_rad, brake_for(contact, in), out.normal_force_n)
+            : sliding_friction_ned(contact, kin.velocity_ned_mps, out.normal_force_n);
+  const double limit = contact.static_friction * out.normal_force_n;
+  const double magnitude = friction_ned.norm();
+  if (magnitude > limit) friction_ned *= limit / magnitude;  // friction circle
+
+  out.force_b_n = in.dcm_ned_to_body * (out.normal_force_n * kUpNed + friction_ned);
+  return out;
+}
+
+void LandingGear::step(double /*dt_s*/, const Inputs& in) {
+  if (in.contacts.size() != params_.contacts.size()) {
+    throw std::invalid_argument("LandingGear::step: " + std::to_string(in.contacts.size()) +
+                                " contact states for " + std::to_string(params_.contacts.size()) +
+                                " contacts");
+  }
+  Outputs& out = outputs_;
+  out.force_b_n.setZero();
+  out.moment_datum_b_nm.setZero();
+  out.weight_on_wheels = false;
+  for (std::size_t i = 0; i < params_.contacts.size(); ++i) {
+    const Contact& contact = params_.contacts[i];
+    ContactOutput& c = out.contacts[i];
+    c = evaluate_contact(contact, in.contacts[i], in);
+    if (!c.in_contact) continue;
+    // The force acts where the tyre meets the ground: the undeflected point moved up by the
+    // compression along the ground normal.
+    const Eigen::Vector3d ground_point_b =
+        contact.position_m + in.dcm_ned_to_body * (c.compression_m * kUpNed);
+    out.force_b_n += c.force_b_n;
+    out.moment_datum_b_nm += ground_point_b.cross(c.force_b_n);
+    if (contact.type == ContactType::kWheel) out.weight_on_wheels = true;
+  }
+}
+
+}  // namespace fedsim::flight

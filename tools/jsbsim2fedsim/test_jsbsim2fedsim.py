@@ -1,0 +1,235 @@
+#!/usr/bin/env python3
+"""Tests of jsbsim2fedsim on a small synthetic JSBSim aircraft (no JSBSim tree needed).
+
+Run: python3 -m unittest discover -s tools/jsbsim2fedsim -p 'test_*.py'
+"""
+
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import jsbsim2fedsim  # noqa: E402
+import jsbsim_aero  # noqa: E402
+import jsbsim_xml as jx  # noqa: E402
+
+AIRCRAFT = """<?xml version="1.0"?>
+<fdm_config name="testplane">
+  <fileheader><description> A made-up test aeroplane. </description></fileheader>
+  <metrics>
+    <wingarea unit="FT2"> 100.0 </wingarea>
+    <wingspan unit="FT"> 20.0 </wingspan>
+    <chord unit="FT"> 5.0 </chord>
+    <location name="AERORP" unit="IN"> <x> 40 </x> <y> 0 </y> <z> 10 </z> </location>
+    <location name="EYEPOINT" unit="IN"> <x> 20 </x> <y> -10 </y> <z> 30 </z> </location>
+  </metrics>
+  <mass_balance>
+    <ixx unit="SLUG*FT2"> 1000 </ixx> <iyy unit="SLUG*FT2"> 2000 </iyy>
+    <izz unit="SLUG*FT2"> 2800 </izz> <ixz unit="SLUG*FT2"> 50 </ixz>
+    <emptywt unit="LBS"> 2000 </emptywt>
+    <location name="CG" unit="IN"> <x> 42 </x> <y> 0 </y> <z> 12 </z> </location>
+    <pointmass name="PILOT"> <weight unit="KG"> 80 </weight>
+      <location unit="M"> <x> 1.0 </x> <y> 0 </y> <z> 0.5 </z> </location> </pointmass>
+  </mass_balance>
+  <ground_reactions>
+    <contact type="BOGEY" name="NOSE">
+      <location unit="IN"> <x> -10 </x> <y> 0 </y> <z> -30 </z> </location>
+      <static_friction> 0.8 </static_friction> <dynamic_friction> 0.5 </dynamic_friction>
+      <rolling_friction> 0.02 </rolling_friction>
+      <strut_force><function><sum>
+        <product><value> -1000 </value><property> gear/unit[0]/compression-ft </property></product>
+        <ifthen><ge><property> gear/unit[0]/compression-velocity-fps </property><value> 0 </value></ge>
+          <product><value> -100 </value><property> gear/unit[0]/compression-velocity-fps </property></product>
+          <product><value> -300 </value><property> gear/unit[0]/compression-velocity-fps </property></product>
+        </ifthen>
+      </sum></function></strut_force>
+      <max_steer unit="DEG"> 20 </max_steer> <brake_group> NOSE </brake_group>
+    </contact>
+  </ground_reactions>
+  <propulsion>
+    <tank type="FUEL"> <location unit="IN"> <x> 45 </x> <y> -50 </y> <z> 20 </z> </location>
+      <capacity unit="LBS"> 100 </capacity> <contents unit="LBS"> 50 </contents> </tank>
+  </propulsion>
+  <flight_control name="test">
+    <channel name="Pitch">
+      <summer name="fcs/pitch-sum"> <input> fcs/elevator-cmd-norm </input>
+        <input> ap/elevator_cmd </input> <clipto> <min> -1 </min> <max> 1 </max> </clipto> </summer>
+      <aerosurface_scale name="fcs/elevator-scale"> <input> fcs/pitch-sum </input>
+        <range> <min> -0.4 </min> <max> 0.3 </max> </range> </aerosurface_scale>
+      <actuator name="fcs/elevator-actuator"> <input> fcs/elevator-scale </input>
+        <lag> 20 </lag> <rate_limit> 2.0 </rate_limit>
+        <clipto> <min> -0.35 </min> <max> 0.35 </max> </clipto>
+        <output> fcs/elevator-pos-rad </output> </actuator>
+    </channel>
+    <channel name="Yaw">
+      <aerosurface_scale name="Rudder Control"> <input> fcs/rudder-cmd-norm </input>
+        <range> <min> -20 </min> <max> 20 </max> </range> <gain> 0.0174533 </gain>
+        <output> fcs/rudder-pos-rad </output> </aerosurface_scale>
+    </channel>
+    <channel name="Flaps">
+      <kinematic name="fcs/flap-control"> <input> fcs/flap-cmd-norm </input>
+        <traverse> <setting> <position> 0 </position> <time> 0 </time> </setting>
+          <setting> <position> 40 </position> <time> 8 </time> </setting> </traverse>
+        <output> fcs/flap-pos-deg </output> </kinematic>
+    </channel>
+  </flight_control>
+  <aerodynamics>
+    <hysteresis_limits unit="DEG"> <min> 5 </min> <max> 20 </max> </hysteresis_limits>
+    <function name="aero/function/ge">
+      <table> <independentVar> aero/h_b-mac-ft </independentVar>
+        <tableData> 0.0 1.2
+                    1.0 1.0 </tableData> </table>
+    </function>
+    <axis name="LIFT">
+      <function name="aero/coefficient/CLa">
+        <product> <property> aero/qbar-area </property> <property> aero/function/ge </property>
+          <table> <independentVar lookup="row"> aero/alpha-deg </independentVar>
+            <independentVar lookup="column"> fcs/flap-pos-deg </independentVar>
+            <tableData>       0.0   40.0
+                      -10.0  -0.5   0.0
+                       10.0   1.0   1.5 </tableData> </table> </product>
+      </function>
+    </axis>
+    <axis name="DRAG">
+      <function name="aero/coefficient/CD0">
+        <product> <property> aero/qbar-psf </property> <property> metrics/Sw-sqft </property>
+          <value> 0.03 </value> </product> </function>
+      <function name="aero/coefficient/CDsum">
+        <sum> <value> 1 </value> <value> 2 </value> </sum> </function>
+    </axis>
+    <axis name="PITCH">
+      <function name="aero/coefficient/Cmq">
+        <product> <property> aero/qbar-area </property> <property> metrics/cbarw-ft </property>
+          <property> aero/ci2vel </property> <property> velocities/q-aero-rad_sec </property>
+          <value> -10 </value> </product> </function>
+      <function name="aero/coefficient/Cmde">
+        <product> <property> aero/qbar-area </property> <property> metrics/cbarw-ft </property>
+          <property> fcs/elevator-pos-deg </property> <value> -0.02 </value> </product> </function>
+      <function name="aero/coefficient/Cm_missing_c">
+        <product> <property> aero/qbar-area </property> <value> 0.1 </value> </product> </function>
+    </axis>
+    <axis name="YAW">
+      <function name="aero/coefficient/Cndr">
+        <product> <property> aero/qbar-area </property> <property> metrics/bw-ft </property>
+          <property> fcs/rudder-pos-rad </property> <value> -0.1 </value> </product> </function>
+    </axis>
+  </aerodynamics>
+</fdm_config>
+"""
+
+
+def convert():
+    notes = []
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "testplane.xml")
+        with open(path, "w") as f:
+            f.write(AIRCRAFT)
+        conv = jsbsim2fedsim.Converter(path, d, notes)
+        sections = {"geometry": conv.geometry(), "mass": conv.mass(),
+                    "flight_controls": conv.flight_controls(), "aerodynamics": conv.aerodynamics(),
+                    "landing_gear": conv.landing_gear(), "limits": conv.limits()}
+        checks = conv.control_sign_report()
+    return sections, notes, checks
+
+
+def plain(v):
+    """Strip Commented wrappers."""
+    if isinstance(v, jsbsim2fedsim.Commented):
+        return plain(v.value)
+    if isinstance(v, dict):
+        return {k: plain(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [plain(x) for x in v]
+    return v
+
+
+class ConverterTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        sections, cls.notes, cls.checks = convert()
+        cls.s = plain(sections)
+
+    def test_geometry_units_and_frame(self):
+        g = self.s["geometry"]
+        self.assertAlmostEqual(g["wing_area_m2"], 100 * 0.3048 ** 2, places=12)
+        self.assertEqual(g["aero_reference_point_m"], [-40 * 0.0254, 0.0, -10 * 0.0254])
+        self.assertEqual(g["pilot_eye_point_m"], [-20 * 0.0254, -10 * 0.0254, -30 * 0.0254])
+
+    def test_mass_and_inertia_signs(self):
+        m = self.s["mass"]
+        self.assertAlmostEqual(m["empty_mass_kg"], 2000 * 0.45359237, places=9)
+        slug_ft2 = jx.SLUG * 0.3048 ** 2
+        self.assertAlmostEqual(m["empty_inertia"]["ixz_kgm2"], -50 * slug_ft2, places=9)
+        self.assertEqual(m["point_masses"][0]["position_m"], [-1.0, 0.0, -0.5])
+        self.assertEqual(m["point_masses"][0]["mass_kg"], 80.0)
+        tank = m["fuel_tanks"][0]
+        self.assertEqual(tank["name"], "tank 0 left")
+        self.assertAlmostEqual(tank["initial_kg"], 50 * 0.45359237, places=12)
+
+    def test_elevator_travel_clip_lag_and_rate(self):
+        e = self.s["flight_controls"]["elevator"]
+        self.assertAlmostEqual(e["deflection_at_plus_one_deg"], math.degrees(0.3), places=9)
+        self.assertAlmostEqual(e["deflection_at_minus_one_deg"], math.degrees(-0.4), places=9)
+        self.assertAlmostEqual(e["min_deflection_deg"], math.degrees(-0.35), places=9)
+        self.assertNotIn("max_deflection_deg", e)  # 0.3 rad never reaches the 0.35 clip
+        self.assertAlmostEqual(e["time_constant_s"], 1 / 20.0, places=12)
+        self.assertAlmostEqual(e["rate_limit_deg_per_s"], math.degrees(2.0), places=9)
+        self.assertTrue(any("ap/elevator_cmd" in n for n in self.notes))
+
+    def test_rudder_command_sign_is_flipped(self):
+        r = self.s["flight_controls"]["rudder"]
+        self.assertAlmostEqual(r["deflection_at_plus_one_deg"], -20 * 0.0174533 * 180 / math.pi, places=6)
+        self.assertIn("rudder command +1 -> Cn change +", self.checks[-1])
+
+    def test_flaps_from_the_kinematic(self):
+        f = self.s["flight_controls"]["flaps"]
+        self.assertEqual(f["positions_norm"], [0.0, 1.0])
+        self.assertEqual(f["transit_times_s"], [8.0])
+        self.assertEqual(f["full_travel_deg"], 40.0)
+
+    def test_table_in_degrees_becomes_radians_and_factor_is_named(self):
+        a = self.s["aerodynamics"]
+        self.assertEqual(a["factors"][0]["name"], "ge")
+        self.assertEqual(a["factors"][0]["table"]["row"], "h_over_b")
+        term = a["lift"][0]
+        self.assertEqual(term["table"]["row"], "alpha_rad")
+        self.assertEqual(term["table"]["column"], "flap_deg")
+        self.assertAlmostEqual(term["table"]["row_breakpoints"][1], math.radians(10), places=12)
+        self.assertEqual(term["multiply_by"], ["ge"])
+        self.assertAlmostEqual(a["stall_hysteresis"]["alpha_set_rad"], math.radians(20), places=12)
+
+    def test_rates_pair_and_degree_multipliers_fold(self):
+        pitch = {t["name"]: t for t in self.s["aerodynamics"]["pitch_moment"]}
+        self.assertEqual(pitch["Cmq"], {"name": "Cmq", "value": -10.0, "multiply_by": ["q_hat"]})
+        self.assertAlmostEqual(pitch["Cmde"]["value"], -0.02 * 180 / math.pi, places=12)
+        self.assertEqual(pitch["Cmde"]["multiply_by"], ["elevator_rad"])
+
+    def test_untranslatable_terms_are_reported_and_dropped(self):
+        names = [t["name"] for t in self.s["aerodynamics"]["drag"]]
+        self.assertEqual(names, ["CD0"])  # q * S recognised; the <sum> term dropped
+        self.assertTrue(any("CDsum" in n and "<sum>" in n for n in self.notes))
+        self.assertNotIn("Cm_missing_c", [t["name"] for t in self.s["aerodynamics"]["pitch_moment"]])
+        self.assertTrue(any("Cm_missing_c" in n and "expected q*S*c" in n for n in self.notes))
+
+    def test_strut_function_is_read_as_spring_and_dampers(self):
+        nose = self.s["landing_gear"]["contacts"][0]
+        lbf_ft = jx.LBF / 0.3048
+        self.assertAlmostEqual(nose["spring_n_per_m"], 1000 * lbf_ft, places=6)
+        self.assertAlmostEqual(nose["damping_n_s_per_m"], 100 * lbf_ft, places=6)
+        self.assertAlmostEqual(nose["rebound_damping_n_s_per_m"], 300 * lbf_ft, places=6)
+        self.assertAlmostEqual(nose["max_steer_deg"], 20.0, places=9)
+        self.assertNotIn("brake_group", nose)  # NOSE brakes are not modelled
+        self.assertTrue(any("NOSE" in n for n in self.notes))
+
+    def test_interpolation_clamps_like_fedsim(self):
+        self.assertEqual(jx.interpolate([[0.0, 1.0]], [2.0, 4.0], [5.0]), 4.0)
+        self.assertEqual(jx.interpolate([[0.0, 1.0]], [2.0, 4.0], [0.25]), 2.5)
+        term = {"value": 2.0, "multiply_by": ["alpha_rad"]}
+        self.assertEqual(jsbsim_aero.evaluate_term(term, {"alpha_rad": 0.5}), 1.0)
+
+
+if __name__ == "__main__":
+    unittest.main()

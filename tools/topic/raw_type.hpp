@@ -1,0 +1,33 @@
+// A type support that keeps each sample's serialized bytes as they are, under any type name:
+// lets `topic hz` subscribe to a topic whose type this build does not know.
+#pragma once
+
+#include <fastdds/dds/topic/TopicDataType.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fedsim::tools {
+
+struct RawSample {
+  std::vector<std::uint8_t> bytes;  // serialized payload, encapsulation header included
+};
+
+class RawPubSubType : public eprosima::fastdds::dds::TopicDataType {
+ public:
+  /// `keyed` must match the writers' topic kind (discovery tells it); `max_size` is the largest
+  /// serialized sample expected (the writers announce theirs).
+  RawPubSubType(const std::string& type_name, bool keyed, std::uint32_t max_size);
+
+  bool serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) override;
+  bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override;
+  std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
+  void* createData() override;
+  void deleteData(void* data) override;
+  /// The key of a raw sample cannot be computed: keyed writers send it with each sample.
+  bool getKey(void* data, eprosima::fastrtps::rtps::InstanceHandle_t* handle,
+              bool force_md5 = false) override;
+};
+
+}  // namespace fedsim::tools

@@ -1,0 +1,259 @@
+#include "tools/topic/topic_monitor.hpp"
+
+#include "common/runtime/shutdown.hpp"
+
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/qos/DomainParticipantFactoryQos.hpp>
+#include <fastdds/dds/log/Log.hpp>
+
+#include <mutex>
+#include <regex>
+#include <sstream>
+#include <thread>
+
+namespace fedsim::tools {
+
+namespace rtps = eprosima::fastrtps::rtps;
+
+namespace {
+
+template <class T>
+std::string to_text(const T& value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+template <class Qos>
+void fill_qos(EndpointInfo& e, const Qos& qos) {
+  e.reliable = qos.m_reliability.kind == fdds::RELIABLE_RELIABILITY_QOS;
+  switch (qos.m_durability.kind) {
+    case fdds::VOLATILE_DURABILITY_QOS: e.durability = 0; break;
+    case fdds::TRANSIENT_LOCAL_DURABILITY_QOS: e.durability = 1; break;
+    case fdds::TRANSIENT_DURABILITY_QOS: e.durability = 2; break;
+    case fdds::PERSISTENT_DURABILITY_QOS: e.durability = 3; break;
+  }
+  e.exclusive_ownership = qos.m_ownership.kind == fdds::EXCLUSIVE_OWNERSHIP_QOS;
+  for (auto it = qos.m_partition.begin(); it != qos.m_partition.end(); ++it) {
+    e.partitions.emplace_back(it->name());
+  }
+}
+
+/// Restores the factory's autoenable setting however create() leaves.
+class DisabledCreation {
+ public:
+  DisabledCreation() {
+    auto* factory = fdds::DomainParticipantFactory::get_instance();
+    factory->get_qos(saved_);
+    fdds::DomainParticipantFactoryQos qos = saved_;
+    qos.entity_factory().autoenable_created_entities = false;
+    factory->set_qos(qos);
+  }
+  ~DisabledCreation() { fdds::DomainParticipantFactory::get_instance()->set_qos(saved_); }
+
+ private:
+  fdds::DomainParticipantFactoryQos saved_;
+};
+
+}  // namespace
+
+std::string EndpointInfo::durability_name() const {
+  switch (durability) {
+    case 1: return "TRANSIENT_LOCAL";
+    case 2: return "TRANSIENT";
+    case 3: return "PERSISTENT";
+    default: return "VOLATILE";
+  }
+}
+
+std::unique_ptr<TopicMonitor> TopicMonitor::create(const runtime::ParticipantOptions& options) {
+  // With a participant listener installed, Fast DDS 2.9 builds a DynamicType from every complete
+  // TypeObject a remote endpoint announces (PDP::check_and_notify_type_discovery, for
+  // on_type_discovery) and logs "DYN_TYPES Error ... MemberId not found" for each keyed fedsim
+  // type received from another process. The tools never use those; silence that category in the
+  // tool's process (their own dynamic-type failures are reported through return values).
+  static std::once_flag quiet_dyn_types;
+  std::call_once(quiet_dyn_types,
+                 [] { fdds::Log::SetCategoryFilter(std::regex("^(?!DYN_TYPES$)")); });
+  std::unique_ptr<TopicMonitor> monitor(new TopicMonitor());
+  {
+    DisabledCreation disabled;
+    monitor->dds_ = runtime::DdsParticipant::create(options);
+  }
+  auto* participant = monitor->dds_->participant();
+  monitor->own_prefix_ = to_text(participant->guid().guidPrefix);
+  // Discovery callbacks do not depend on the status mask; none of the data statuses is wanted
+  // here (each reader has its own listener).
+  participant->set_listener(monitor.get(), fdds::StatusMask::none());
+  if (participant->enable() != ReturnCode_t::RETCODE_OK) {
+    participant->set_listener(nullptr);
+    throw runtime::DdsError("cannot enable the DDS participant of the topic tools");
+  }
+  return monitor;
+}
+
+TopicMonitor::~TopicMonitor() {
+  if (dds_ && dds_->participant()) dds_->participant()->set_listener(nullptr);
+  dds_.reset();  // last owner: deletes the participant (its threads) while `this` is alive
+}
+
+void TopicMonitor::on_participant_discovery(fdds::DomainParticipant*,
+                                            rtps::ParticipantDiscoveryInfo&& info) {
+  const std::string prefix = to_text(info.info.m_guid.guidPrefix);
+  std::lock_guard lock(mutex_);
+  switch (info.status) {
+    case rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT:
+    case rtps::ParticipantDiscoveryInfo::CHANGED_QOS_PARTICIPANT:
+      participant_names_[prefix] = info.info.m_participantName.to_string();
+      break;
+    default:  // removed or dropped: its endpoints go too
+      participant_names_.erase(prefix);
+      for (auto it = endpoints_.begin(); it != endpoints_.end();) {
+        it = it->first.rfind(prefix, 0) == 0 ? endpoints_.erase(it) : std::next(it);
+      }
+      break;
+  }
+  changed_.notify_all();
+}
+
+void TopicMonitor::on_publisher_discovery(fdds::DomainParticipant*,
+                                          rtps::WriterDiscoveryInfo&& info) {
+  const auto& data = info.info;
+  EndpointInfo e;
+  e.guid = to_text(data.guid());
+  e.topic = data.topicName().to_string();
+  e.type_name = data.typeName().to_string();
+  e.writer = true;
+  e.keyed = data.topicKind() == rtps::WITH_KEY;
+  e.max_serialized_size = data.typeMaxSerialized();
+  fill_qos(e, data.m_qos);
+  if (data.has_type() && data.has_type_id() && data.type().m_type_object._d() != 0) {
+    e.type_object = std::make_shared<eprosima::fastrtps::types::TypeObject>(
+        data.type().m_type_object);
+    e.type_identifier = std::make_shared<eprosima::fastrtps::types::TypeIdentifier>(
+        data.type_id().m_type_identifier);
+  }
+  update(std::move(e), info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER);
+}
+
+void TopicMonitor::on_subscriber_discovery(fdds::DomainParticipant*,
+                                           rtps::ReaderDiscoveryInfo&& info) {
+  const auto& data = info.info;
+  EndpointInfo e;
+  e.guid = to_text(data.guid());
+  e.topic = data.topicName().to_string();
+  e.type_name = data.typeName().to_string();
+  e.writer = false;
+  e.keyed = data.topicKind() == rtps::WITH_KEY;
+  fill_qos(e, data.m_qos);
+  update(std::move(e), info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
+}
+
+void TopicMonitor::update(EndpointInfo info, bool removed) {
+  if (info.guid.rfind(own_prefix_, 0) == 0) return;  // the tool's own endpoints
+  std::lock_guard lock(mutex_);
+  if (removed) {
+    endpoints_.erase(info.guid);
+  } else {
+    endpoints_[info.guid] = std::move(info);
+  }
+  changed_.notify_all();
+}
+
+std::map<std::string, TopicInfo> TopicMonitor::topics() const {
+  std::lock_guard lock(mutex_);
+  std::map<std::string, TopicInfo> result;
+  for (const auto& [guid, endpoint] : endpoints_) {
+    EndpointInfo e = endpoint;
+    const std::string prefix = guid.substr(0, guid.find('|'));
+    if (auto it = participant_names_.find(prefix); it != participant_names_.end()) {
+      e.participant = it->second;
+    }
+    TopicInfo& topic = result[e.topic];
+    topic.name = e.topic;
+    topic.type_names.insert(e.type_name);
+    (e.writer ? topic.writers : topic.readers).push_back(std::move(e));
+  }
+  return result;
+}
+
+std::optional<TopicInfo> TopicMonitor::topic(const std::string& name) const {
+  auto all = topics();
+  auto it = all.find(name);
+  if (it == all.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<TopicInfo> TopicMonitor::wait_for_topic(
+    const std::string& name, std::chrono::milliseconds timeout,
+    const std::function<bool(const TopicInfo&)>& predicate) {
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    auto found = topic(name);
+    if (found && predicate(*found)) return found;
+    if (std::chrono::steady_clock::now() >= until || runtime::shutdown_requested()) return found;
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, std::chrono::milliseconds(20));
+  }
+}
+
+fdds::DataReaderQos reader_qos_matching(const std::vector<EndpointInfo>& writers, int depth) {
+  fdds::DataReaderQos qos = fdds::DATAREADER_QOS_DEFAULT;
+  bool reliable = !writers.empty();
+  bool transient_local = !writers.empty();
+  bool exclusive = !writers.empty();
+  for (const auto& w : writers) {
+    reliable = reliable && w.reliable;
+    transient_local = transient_local && w.durability >= 1;
+    exclusive = exclusive && w.exclusive_ownership;
+  }
+  qos.reliability().kind =
+      reliable ? fdds::RELIABLE_RELIABILITY_QOS : fdds::BEST_EFFORT_RELIABILITY_QOS;
+  qos.durability().kind =
+      transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS : fdds::VOLATILE_DURABILITY_QOS;
+  qos.ownership().kind = exclusive ? fdds::EXCLUSIVE_OWNERSHIP_QOS : fdds::SHARED_OWNERSHIP_QOS;
+  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = depth;
+  constexpr int kMaxInstances = 1024;
+  qos.resource_limits().max_instances = kMaxInstances;
+  qos.resource_limits().max_samples_per_instance = depth;
+  qos.resource_limits().max_samples = kMaxInstances * depth;
+  qos.resource_limits().allocated_samples = std::min(100, kMaxInstances * depth);
+  qos.data_sharing().off();
+  return qos;
+}
+
+std::optional<TopicInfo> discover_topic(TopicMonitor& monitor, const std::string& topic,
+                                        std::chrono::milliseconds wait) {
+  auto found = monitor.wait_for_topic(topic, wait,
+                                      [](const TopicInfo& t) { return !t.writers.empty(); });
+  if (found && !found->writers.empty()) {
+    constexpr auto kSettle = std::chrono::milliseconds(250);
+    std::this_thread::sleep_for(kSettle);
+    found = monitor.topic(topic);
+  }
+  return found;
+}
+
+ftypes::DynamicType_ptr dynamic_type_for(const TopicInfo& topic) {
+  if (topic.type_names.size() != 1) {
+    std::string names;
+    for (const auto& n : topic.type_names) names += (names.empty() ? "" : ", ") + n;
+    throw runtime::DdsError("topic '" + topic.name + "' is used with several types (" + names +
+                            ")");
+  }
+  const std::string& type_name = *topic.type_names.begin();
+  if (auto type = dynamic_type_by_name(type_name)) return type;
+  for (const auto& w : topic.writers) {
+    if (w.type_object && w.type_identifier) {
+      if (auto type = dynamic_type_from_object(type_name, *w.type_identifier, *w.type_object)) {
+        return type;
+      }
+    }
+  }
+  throw runtime::DdsError("type '" + type_name + "' of topic '" + topic.name +
+                          "' is unknown: it is not in fedsim's IDL and its writers sent no "
+                          "complete TypeObject");
+}
+
+}  // namespace fedsim::tools
