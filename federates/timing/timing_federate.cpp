@@ -98,6 +98,15 @@ void TimingFederate::flush_status_messages() {
     messages.swap(status_messages_);
   }
   for (const auto& m : messages) publish_status(msg::FEDERATE_RUNNING, m);
+  const std::uint64_t now = util::monotonic_ns();
+  if (now >= next_status_ns_) {  // the once-a-second heartbeat with the frame count
+    next_status_ns_ = now + kNsPerS;
+    publish_status(msg::FEDERATE_RUNNING, "");
+  }
+}
+
+bool TimingFederate::status_due_locked() const {
+  return !status_messages_.empty() || util::monotonic_ns() >= next_status_ns_;
 }
 
 void TimingFederate::on_status(const msg::FederateStatus& status) {
@@ -318,7 +327,7 @@ void TimingFederate::run_realtime() {
     }
     if (n > 0) summary_.period_error.add_ns(now - deadline);
     publish_tick_locked();
-    if (!status_messages_.empty()) {
+    if (status_due_locked()) {
       lock.unlock();
       flush_status_messages();
     }
@@ -335,7 +344,7 @@ void TimingFederate::run_lockstep() {
   publish_tick_locked();
   for (;;) {
     cv_.wait_for(lock, std::chrono::milliseconds(10));
-    if (!status_messages_.empty()) {
+    if (status_due_locked()) {
       lock.unlock();
       flush_status_messages();
       lock.lock();

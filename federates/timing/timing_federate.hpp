@@ -82,6 +82,7 @@ class TimingFederate {
   bool frames_exhausted_locked() const;
   void publish_status(msg::FederateState state, const std::string& message);
   void flush_status_messages();
+  bool status_due_locked() const;
 
   TimingOptions options_;
   std::shared_ptr<spdlog::logger> log_;
@@ -110,7 +111,8 @@ class TimingFederate {
   std::map<std::string, std::string> writer_to_federate_;  // publication handle -> name
   std::map<std::string, std::uint64_t> last_ack_ns_;       // federate -> time of its last ack
   TimingSummary summary_;
-  std::vector<std::string> status_messages_;  // queued under mutex_, published outside it
+  std::vector<std::string> status_messages_;
+  std::uint64_t next_status_ns_ = 0;  // queued under mutex_, published outside it
   std::string stop_reason_;
   int exit_code_ = 0;
 };

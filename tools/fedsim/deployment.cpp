@@ -1,0 +1,106 @@
+#include "fedsim/deployment.hpp"
+
+#include "common/util/config_node.hpp"
+
+#include <filesystem>
+#include <set>
+
+namespace fedsim::launcher {
+
+namespace {
+
+using util::ConfigNode;
+
+std::vector<std::string> string_list(const ConfigNode& node, const std::string& key) {
+  if (!node.has(key)) return {};
+  std::vector<std::string> out;
+  for (const auto& item : node.child(key).items()) out.push_back(item.as_string());
+  return out;
+}
+
+FederateSpec read_federate(const ConfigNode& node) {
+  node.reject_unknown_keys({"name", "binary", "args", "lockstep", "federate_options", "required"});
+  FederateSpec spec;
+  spec.name = node.string("name");
+  if (spec.name.empty() || spec.name.size() > 31) node.fail_at("name", "must be 1-31 characters");
+  spec.binary = node.string("binary");
+  spec.args = string_list(node, "args");
+  spec.lockstep = node.boolean_or("lockstep", true);
+  spec.federate_options = node.boolean_or("federate_options", true);
+  spec.required = node.boolean_or("required", true);
+  if (spec.lockstep && !spec.federate_options) {
+    node.fail_at("lockstep", "a lockstep federate needs the federate options (--name...)");
+  }
+  return spec;
+}
+
+Deployment read(const ConfigNode& root) {
+  root.reject_unknown_keys({"name", "mode", "rate_hz", "domain", "qos_file", "participant_profile",
+                            "timing", "federates", "after"});
+  Deployment d;
+  d.file = root.file();
+  d.name = root.string("name");
+  d.mode = root.choice_or("mode", {"realtime", "lockstep"}, "lockstep");
+  d.rate_hz = root.number_or("rate_hz", 50.0, 1.0, 10000.0);
+  if (root.has("domain")) {
+    d.domain = root.integer("domain", 0, 232);
+    d.domain_given = true;
+  }
+  d.qos_file = root.string_or("qos_file", "${SOURCE_DIR}/qos/fedsim_qos.xml");
+  d.participant_profile = root.string_or("participant_profile", "fedsim_loopback");
+  if (root.has("timing")) {
+    const auto timing = root.child("timing");
+    timing.reject_unknown_keys({"args", "enabled"});
+    d.timing_args = string_list(timing, "args");
+    d.has_timing = timing.boolean_or("enabled", true);
+  }
+  std::set<std::string> names{"timing"};
+  for (const auto& item : root.child("federates").items()) {
+    auto spec = read_federate(item);
+    if (!names.insert(spec.name).second) {
+      item.fail_at("name", "'" + spec.name + "' is used twice (or clashes with the timing federate)");
+    }
+    d.federates.push_back(std::move(spec));
+  }
+  if (d.federates.empty()) root.fail_at("federates", "lists no federate");
+  if (root.has("after")) {
+    for (const auto& cmd : root.child("after").items()) {
+      std::vector<std::string> argv;
+      for (const auto& word : cmd.items()) argv.push_back(word.as_string());
+      if (argv.empty()) cmd.fail("an 'after' command is empty");
+      d.after.push_back(std::move(argv));
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+Deployment load_deployment(const std::string& path) { return read(ConfigNode::load_file(path)); }
+
+Deployment parse_deployment(const std::string& text, const std::string& origin) {
+  return read(ConfigNode::parse(text, origin));
+}
+
+std::string substitute(const std::string& text, const std::map<std::string, std::string>& vars) {
+  std::string out;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const auto start = text.find("${", pos);
+    if (start == std::string::npos) {
+      out += text.substr(pos);
+      break;
+    }
+    const auto end = text.find('}', start);
+    if (end == std::string::npos) throw util::ConfigError("unterminated ${ in '" + text + "'");
+    out += text.substr(pos, start - pos);
+    const std::string name = text.substr(start + 2, end - start - 2);
+    const auto it = vars.find(name);
+    if (it == vars.end()) throw util::ConfigError("unknown variable ${" + name + "} in '" + text + "'");
+    out += it->second;
+    pos = end + 1;
+  }
+  return out;
+}
+
+}  // namespace fedsim::launcher

@@ -1,0 +1,58 @@
+// A deployment file: which federates `fedsim run` starts, with what arguments, on which DDS
+// domain and QoS profile. YAML, validated on load (errors name file, line and field).
+//
+//   name: default
+//   mode: lockstep            # realtime | lockstep (fedsim run --mode overrides)
+//   rate_hz: 50
+//   domain: 0                 # FEDSIM_DOMAIN / --domain override
+//   qos_file: ${SOURCE_DIR}/qos/fedsim_qos.xml
+//   participant_profile: fedsim_loopback
+//   timing: {args: [--frames, "3000"]}
+//   federates:
+//     - {name: io, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/x.csv"]}
+//     - {name: viewer, binary: fedsim, args: [topic, hz, fedsim/aircraft_state], lockstep: false,
+//        federate_options: false}
+//   after: [[gnuplot, "${OUT_DIR}/plot.gp"]]   # run once the federation stopped cleanly
+//
+// Substitutions in args: ${SOURCE_DIR}, ${DATA_DIR}, ${DEPLOY_DIR} (the file's folder),
+// ${OUT_DIR} (fedsim run --out), ${BIN_DIR} (where the fedsim binaries are).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fedsim::launcher {
+
+struct FederateSpec {
+  std::string name;
+  std::string binary;              // bare name (looked up in BIN_DIR, then PATH) or a path
+  std::vector<std::string> args;
+  bool lockstep = true;            // acknowledges every frame: the timing federate waits for it
+  bool federate_options = true;    // pass --name/--domain/--qos-file/--participant-profile
+  bool required = true;            // the run fails if this one exits with an error
+};
+
+struct Deployment {
+  std::string file;
+  std::string name;
+  std::string mode = "lockstep";
+  double rate_hz = 50.0;
+  int domain = 0;
+  bool domain_given = false;
+  std::string qos_file;
+  std::string participant_profile = "fedsim_loopback";
+  std::vector<std::string> timing_args;
+  bool has_timing = true;
+  std::vector<FederateSpec> federates;
+  std::vector<std::vector<std::string>> after;
+};
+
+/// Loads and validates a deployment; throws util::ConfigError ("file:line: field: problem").
+Deployment load_deployment(const std::string& path);
+Deployment parse_deployment(const std::string& text, const std::string& origin);
+
+/// Replaces ${NAME} by vars.at(NAME); an unknown name is an error naming it.
+std::string substitute(const std::string& text, const std::map<std::string, std::string>& vars);
+
+}  // namespace fedsim::launcher

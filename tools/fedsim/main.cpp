@@ -1,0 +1,33 @@
+// fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
+// `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics.
+#include "fedsim/launcher.hpp"
+#include "topic/topic_commands.hpp"
+
+#include <CLI/CLI.hpp>
+
+int main(int argc, char** argv) {
+  CLI::App app{"fedsim: a DDS-federated engineering flight simulator"};
+  app.require_subcommand(1);
+
+  fedsim::launcher::RunOptions run;
+  auto* run_cmd = app.add_subcommand("run", "start the federation a deployment file lists");
+  run_cmd->add_option("deployment", run.deployment_path, "deployment file (YAML)")->required();
+  run_cmd->add_option("--mode", run.mode, "override the deployment: realtime | lockstep")
+      ->check(CLI::IsMember({"realtime", "lockstep"}));
+  run_cmd->add_option("--duration", run.duration_s, "stop everything after this many seconds")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--domain", run.domain, "DDS domain (default: FEDSIM_DOMAIN, the file, 0)")
+      ->check(CLI::Range(0, 232));
+  run_cmd->add_option("--out", run.out_dir, "output folder (default out/<deployment name>)");
+  run_cmd->add_option("--stop-grace", run.stop_grace_s, "seconds between SIGTERM and SIGKILL")
+      ->capture_default_str();
+  run_cmd->add_option("--progress", run.progress_period_s, "seconds between progress lines (0 = off)")
+      ->capture_default_str();
+  run_cmd->add_flag("--quiet", run.quiet, "do not echo federate output (logs are still kept)");
+  int exit_code = 0;
+  run_cmd->callback([&] { exit_code = fedsim::launcher::run_deployment(run); });
+
+  fedsim::tools::add_topic_commands(app);
+  CLI11_PARSE(app, argc, argv);
+  return exit_code;
+}
