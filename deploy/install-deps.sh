@@ -15,7 +15,7 @@ PACKAGES=(
   # tests
   libgtest-dev libgmock-dev
   # process tools used by tests (pgrep/pkill) and network namespaces
-  procps iproute2
+  procps iproute2 strace
 )
 
 missing=()

@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
         trace << ctx.frame << ',' << ctx.sim_frame << ',' << ctx.sim_time_s << ','
               << static_cast<int>(ctx.run_state) << ',' << ctx.reset_count << ',' << input_frame
               << ',' << elevator << '\n';
+        trace.flush();  // tests watch the file grow
       }
     });
   } catch (const std::exception& e) {

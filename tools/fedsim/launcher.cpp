@@ -349,11 +349,12 @@ int run_deployment(const RunOptions& options) {
       }
     }
     if (stop_since) {
+      const std::uint64_t stopping_ns = util::monotonic_ns() - stop_since;
       // Give the timing federate's SHUTDOWN command a moment, then signal everyone.
-      if (now - stop_since > 300'000'000ull) {
+      if (stopping_ns > 300'000'000ull) {
         for (auto& c : children) terminate(*c);
       }
-      if (now - stop_since > options.stop_grace_s * 1e9 + 3e8) {
+      if (stopping_ns > options.stop_grace_s * 1e9 + 3e8) {
         for (auto& c : children) {
           if (!c->exited) {
             std::cerr << "fedsim run: " << c->name << " did not stop within "

@@ -1,0 +1,113 @@
+// The QoS profiles file loads, every named profile creates its endpoint, and the profiles
+// behave as qos/README.md says (late joiners get the last command).
+#include "common/runtime/federate_options.hpp"
+#include "common/runtime/publisher.hpp"
+#include "common/runtime/subscription.hpp"
+
+#include <fastdds/dds/publisher/qos/DataWriterQos.hpp>
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace fedsim::runtime {
+namespace {
+
+ParticipantOptions options_on(int domain, const std::string& name) {
+  ParticipantOptions o;
+  o.name = name;
+  o.domain_id = domain;
+  o.qos_file = default_qos_file();
+  return o;
+}
+
+TEST(QosProfiles, EveryProfileCreatesWriterAndReader) {
+  auto dds = DdsParticipant::create(options_on(120, "qos-test"));
+  for (const std::string profile :
+       {"tick", "frame_done", "state", "lockstep_data", "command", "status"}) {
+    SCOPED_TRACE(profile);
+    EXPECT_NO_THROW(Publisher<msg::FederateStatus>(dds, "qos_test/" + profile, profile));
+    EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, "qos_test/" + profile, profile));
+  }
+}
+
+TEST(QosProfiles, ProfilesCarryTheDocumentedPolicies) {
+  auto dds = DdsParticipant::create(options_on(120, "qos-test"));
+  Publisher<msg::AircraftState> state(dds, "qos_test/state", "state");
+  Publisher<msg::SimCommand> command(dds, "qos_test/command", "command");
+  Publisher<msg::FrameDone> done(dds, "qos_test/done", "frame_done");
+  using namespace eprosima::fastdds::dds;
+  EXPECT_EQ(state.writer()->get_qos().reliability().kind, BEST_EFFORT_RELIABILITY_QOS);
+  EXPECT_EQ(state.writer()->get_qos().history().depth, 1);
+  EXPECT_LT(state.writer()->get_qos().deadline().period.seconds, 1);
+  EXPECT_EQ(command.writer()->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
+  EXPECT_EQ(command.writer()->get_qos().durability().kind, TRANSIENT_LOCAL_DURABILITY_QOS);
+  EXPECT_EQ(done.writer()->get_qos().liveliness().kind, AUTOMATIC_LIVELINESS_QOS);
+}
+
+TEST(QosProfiles, UnknownProfileAndMissingFileGiveClearErrors) {
+  auto o = options_on(120, "qos-test");
+  o.participant_profile = "no_such_profile";
+  try {
+    DdsParticipant::create(o);
+    FAIL();
+  } catch (const DdsError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_profile"), std::string::npos);
+  }
+  o = options_on(120, "qos-test");
+  o.qos_file = "/nonexistent/qos.xml";
+  EXPECT_THROW(DdsParticipant::create(o), DdsError);
+  auto dds = DdsParticipant::create(options_on(120, "qos-test"));
+  EXPECT_THROW(Publisher<msg::FrameDone>(dds, "qos_test/x", "no_such_writer_profile"), DdsError);
+}
+
+TEST(QosProfiles, LateJoinerReceivesTheLastCommandOfEachKind) {
+  auto writer_side = DdsParticipant::create(options_on(121, "commander"));
+  Publisher<msg::SimCommand> commands(writer_side, msg::TOPIC_SIM_COMMAND, "command");
+  msg::SimCommand cmd;
+  cmd.kind(msg::COMMAND_RUN_STATE);
+  for (std::uint32_t seq = 1; seq <= 3; ++seq) {
+    cmd.sequence_number(seq);
+    cmd.run_state(seq == 3 ? msg::RUN_STATE_FREEZE : msg::RUN_STATE_RUN);
+    commands.publish(cmd);
+  }
+  msg::SimCommand weather;
+  weather.kind(msg::COMMAND_WEATHER);
+  weather.sequence_number(4);
+  weather.weather().wind_speed_mps(15.0);
+  commands.publish(weather);
+
+  // A participant that joins afterwards.
+  auto late = DdsParticipant::create(options_on(121, "late-joiner"));
+  std::mutex m;
+  std::vector<msg::SimCommand> received;
+  Subscription<msg::SimCommand> sub(late, msg::TOPIC_SIM_COMMAND, "command",
+                                    [&](const msg::SimCommand& c, const auto&) {
+                                      std::lock_guard lock(m);
+                                      received.push_back(c);
+                                    });
+  for (int i = 0; i < 200; ++i) {
+    {
+      std::lock_guard lock(m);
+      if (received.size() >= 2) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  std::lock_guard lock(m);
+  ASSERT_EQ(received.size(), 2u);
+  bool saw_run_state = false, saw_weather = false;
+  for (const auto& c : received) {
+    if (c.kind() == msg::COMMAND_RUN_STATE) {
+      saw_run_state = true;
+      EXPECT_EQ(c.sequence_number(), 3u);  // only the latest of that kind
+      EXPECT_EQ(c.run_state(), msg::RUN_STATE_FREEZE);
+    }
+    if (c.kind() == msg::COMMAND_WEATHER) {
+      saw_weather = true;
+      EXPECT_DOUBLE_EQ(c.weather().wind_speed_mps(), 15.0);
+    }
+  }
+  EXPECT_TRUE(saw_run_state && saw_weather);
+}
+
+}  // namespace
+}  // namespace fedsim::runtime

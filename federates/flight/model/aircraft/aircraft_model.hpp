@@ -1,0 +1,220 @@
+// The aircraft executive (as JSBSim's FGFDMExec): one aircraft pack flown through atmosphere,
+// weather, flight controls, air data, propulsion, aerodynamics, ground reactions, mass balance
+// and the equations of motion, in that order, frame by frame.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "flight/model/aircraft/aerodynamics.hpp"
+#include "flight/model/aircraft/aircraft_controls.hpp"
+#include "flight/model/aircraft/aircraft_outputs.hpp"
+#include "flight/model/aircraft/aircraft_pack.hpp"
+#include "flight/model/aircraft/initial_conditions.hpp"
+#include "flight/model/aircraft/trim.hpp"
+#include "flight/model/aircraft/weather_settings.hpp"
+#include "flight/model/dynamics/rigid_body_dynamics.hpp"
+#include "flight/model/environment/atmosphere.hpp"
+#include "flight/model/math/integration_method.hpp"
+#include "flight/model/math/integrator.hpp"
+#include "flight/model/systems/actuator.hpp"
+#include "flight/model/systems/landing_gear.hpp"
+#include "flight/model/systems/mass_balance.hpp"
+#include "flight/model/systems/piston_powerplant.hpp"
+#include "flight/model/systems/turbofan.hpp"
+
+namespace fedsim::flight {
+
+/// The executive. Construct from a pack, reset() to initial conditions (or trim, or
+/// reposition), then set_controls() and step() once per frame and read outputs().
+///
+/// Order of the sub-models (stated once, in evaluate()):
+///   1 atmosphere at the CG altitude, 2 weather (steady wind, microburst, turbulence),
+///   3 flight controls (actuator positions), 4 air data (TAS, CAS, EAS, Mach, alpha, beta,
+///   qbar), 5 propulsion, 6 aerodynamics, 7 ground reactions, 8 mass balance,
+///   9 equations of motion (RigidBodyDynamics with the chosen integrator).
+/// Each integration step (frame period / substeps) every sub-model with a state (actuators,
+/// engines, turbulence, stall hysteresis, fuel) advances once from the conditions at the start
+/// of the step, while the forces are re-evaluated at every derivative evaluation of the
+/// integrator (four times per RK4 step) from the trial state: air data, aerodynamics and
+/// ground reactions follow the trial state, the engines' and actuators' outputs are held.
+/// Forces and moments are moved to the CG once: aerodynamics from the aero reference point,
+/// engines and gear from the pack datum. Aerodynamic rates are relative to the air mass:
+/// body rates minus the earth's rate minus the turbulence gust rates (Etkin).
+///
+/// Real-time rules: step(), set_controls(), set_engine_failed(), set_runway_elevation_m() and
+/// outputs() never allocate; the constructor, reset(), the repositions, trim and set_weather()
+/// may. Nothing is ever NaN: alpha and beta are 0 at zero airspeed, rates vanish below 1 mm/s,
+/// and a step that would produce a non-finite state is dropped (outputs().numerical_fault).
+class AircraftModel {
+ public:
+  static constexpr std::size_t kMaxEngines = AircraftControls::kMaxEngines;
+
+  struct Options {
+    /// Flat: NED at the scenario origin (the reset/reposition point at h = 0) is inertial and
+    /// gravity is constant. WGS-84: rotating ellipsoid with J2 gravity (seed 3.11).
+    EarthModelKind earth = EarthModelKind::kFlat;
+    IntegrationMethod integrator = IntegrationMethod::kAb2;
+    /// Integration steps per frame (the step is the frame period divided by this).
+    int substeps = 1;
+    /// Turbulence seed unless the weather names one.
+    std::uint64_t turbulence_seed = 1;
+    /// Add the spinning propellers' angular momentum to the moment equations (seed eqs
+    /// 3.110-3.112).
+    bool engine_gyroscopic_moments = true;
+    /// The terrain: a level plane at this height above MSL (m).
+    double runway_elevation_m = 0.0;
+    double flat_earth_gravity_mps2 = 9.80665;
+
+    /// Throws std::invalid_argument naming the bad field.
+    void validate() const;
+  };
+
+  /// A runway end: threshold position on the centreline (lat, lon in rad; alt_m = the
+  /// runway's elevation) and the true heading of the runway direction.
+  struct Runway {
+    GeodeticPosition threshold;
+    double heading_rad = 0.0;
+  };
+
+  /// Builds every sub-model from the pack (throws std::invalid_argument if the pack has more
+  /// than kMaxEngines engines or the options are bad). The aircraft starts at rest at 0 N 0 E,
+  /// 1000 m, until reset() is called.
+  AircraftModel(AircraftPack pack, Options options);
+  ~AircraftModel();
+  AircraftModel(const AircraftModel&) = delete;
+  AircraftModel& operator=(const AircraftModel&) = delete;
+
+  // ---- Run control --------------------------------------------------------------------------
+
+  /// Starts a run: time 0, fuel and masses as the pack (or the IC) say, actuators at the
+  /// commanded positions, engines running or not (and settled if asked), the flat-earth origin
+  /// pinned under the IC position, the integrator history cleared.
+  void reset(const AircraftInitialConditions& initial);
+  /// Advances one frame of frame_dt_s (> 0) seconds in Options::substeps integration steps.
+  void step(double frame_dt_s);
+
+  // ---- Pilot inputs -------------------------------------------------------------------------
+
+  /// The commands for the next step (clamped, NaN-safe; see AircraftControls).
+  void set_controls(const AircraftControls& controls);
+  const AircraftControls& controls() const { return controls_; }
+
+  // ---- Repositioning (instructor) -----------------------------------------------------------
+  // Each keeps fuel, weather and failures, re-pins the flat-earth origin at the new position,
+  // trims there and leaves the model in the trimmed state with the trimmed controls (check
+  // the result: if the trim fails the model is in the best state found).
+
+  /// In flight at a point: wings level, straight and level at the true airspeed.
+  TrimResult reposition_to_point(const GeodeticPosition& position, double heading_rad,
+                                 double tas_mps);
+  /// On the runway centreline at the threshold, aligned, at rest, brakes set; the runway
+  /// elevation becomes the threshold's.
+  TrimResult reposition_to_runway(const Runway& runway);
+  /// On the extended centreline distance_m before the threshold, on a glide path of
+  /// glide_path_rad (3 deg) through 50 ft over the threshold, established in a steady descent
+  /// at the true airspeed with the current flaps and gear.
+  TrimResult reposition_to_approach_gate(const Runway& runway, double distance_m, double tas_mps,
+                                         double glide_path_rad = 3.0 * 3.14159265358979323846 /
+                                                                 180.0);
+
+  // ---- Environment and failures -------------------------------------------------------------
+
+  /// Replaces the weather (validates; rebuilds the wind tables and the turbulence generator,
+  /// which restarts from its seed).
+  void set_weather(const WeatherSettings& weather);
+  const WeatherSettings& weather() const { return weather_; }
+  /// Fails (true) or restores an engine (0-based): a failed engine burns no fuel and makes no
+  /// power; a turbofan spools down, a piston engine windmills. Out-of-range indices are ignored.
+  void set_engine_failed(std::size_t engine, bool failed);
+  bool engine_failed(std::size_t engine) const;
+  /// Moves the terrain plane (m above MSL).
+  void set_runway_elevation_m(double elevation_m);
+  double runway_elevation_m() const { return runway_elevation_m_; }
+  void set_integration_method(IntegrationMethod method);
+
+  // ---- Outputs ------------------------------------------------------------------------------
+
+  /// The state after the last step (or reset), with its forces and air data.
+  const AircraftOutputs& outputs() const { return outputs_; }
+  double time_s() const { return time_s_; }
+  const AircraftPack& pack() const { return pack_; }
+  const Options& options() const { return options_; }
+  std::size_t engine_count() const { return engines_.size(); }
+  /// The rigid-body state (reference frame of the earth model: flat NED or ECEF).
+  RigidBodyState body_state() const { return RigidBodyDynamics::unpack(x_); }
+  /// The scenario origin (flat-earth NED origin; reference for north_m / east_m and the
+  /// microburst).
+  const GeodeticPosition& origin() const { return origin_; }
+  /// The air of the present weather (ISA offsets applied).
+  const Atmosphere& atmosphere() const { return atmosphere_; }
+
+  // ---- For trim and linearisation -----------------------------------------------------------
+
+  /// Moves the aircraft to a state without touching fuel, engines, actuators or time, re-pins
+  /// the flat-earth origin there and clears the integrator history; outputs are refreshed.
+  void set_state(const AircraftInitialConditions& state);
+  /// Puts every actuator at the position its command asks for (and the gear at its lever) and
+  /// runs the engines to their steady state at the present flight condition; outputs are
+  /// refreshed. Used by trim and by a settled reset.
+  void settle_systems();
+
+ private:
+  struct Engine;
+  struct Surfaces;
+  struct Evaluation;
+
+  void build_systems();
+  void evaluate(const RigidBodyState& state, Evaluation& eval);
+  void evaluate_current();
+  void advance_systems(double dt_s);
+  void integrate_body(double dt_s);
+  void fill_outputs(const RigidBodyState& state, const Evaluation& eval);
+  void update_mass_properties(bool force);
+  void pin_origin(const GeodeticPosition& at);
+  void restart_turbulence();
+  AircraftInitialConditions current_as_initial_conditions() const;
+
+  AircraftPack pack_;
+  Options options_;
+  AircraftControls controls_;
+  WeatherSettings weather_;
+  double runway_elevation_m_ = 0.0;
+  GeodeticPosition origin_;
+  double origin_meridian_radius_m_ = 0.0;
+  double origin_parallel_radius_m_ = 0.0;
+
+  // Sub-models (built from the pack at construction).
+  Atmosphere atmosphere_;
+  WindProfile wind_;
+  WindShear microburst_;
+  std::unique_ptr<Turbulence> turbulence_;
+  std::unique_ptr<Surfaces> surfaces_;
+  std::vector<Engine> engines_;
+  Aerodynamics aerodynamics_;
+  std::unique_ptr<LandingGear> gear_;
+  std::unique_ptr<MassBalance> mass_;
+  RigidBodyDynamics dynamics_;
+  Integrator<RigidBodyDynamics::kStateSize> integrator_;
+
+  // Scratch sized at construction so that a step never allocates.
+  std::vector<LandingGear::ContactKinematics> contact_kinematics_;
+  std::vector<double> fuel_flows_kgps_;
+  std::unique_ptr<Evaluation> current_;  // evaluation at the present state
+  std::unique_ptr<Evaluation> trial_;    // scratch for the integrator's trial states
+
+  RigidBodyDynamics::StateVector x_;
+  double time_s_ = 0.0;
+  bool current_valid_ = false;
+  bool gusts_active_ = false;  // false from a reset/set_state until turbulence next steps
+  double alpha_dot_radps_ = 0.0;  // from the last evaluation's accelerations (one step old)
+  double beta_dot_radps_ = 0.0;
+  double mass_used_by_dynamics_kg_ = 0.0;
+  AircraftOutputs outputs_;
+};
+
+}  // namespace fedsim::flight

@@ -1,0 +1,285 @@
+// Real federates as separate processes over DDS on 127.0.0.1: lockstep ordering, freeze, reset,
+// a killed federate, scripted I/O, the launcher, and network confinement. Each test uses its
+// own DDS domain so that ctest -j runs do not see each other.
+#include "child_process.hpp"
+#include "common/runtime/federate_options.hpp"
+#include "common/runtime/publisher.hpp"
+#include "io/input_profile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <thread>
+
+namespace fedsim::testing {
+namespace {
+
+struct TraceRow {
+  std::uint64_t frame, sim_frame;
+  double sim_time_s;
+  int state;
+  std::uint32_t reset_count;
+  long long input_frame;
+  double elevator;
+};
+
+std::vector<TraceRow> read_trace(const std::string& path) {
+  std::vector<TraceRow> rows;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    TraceRow r{};
+    char c;
+    std::istringstream s(line);
+    s >> r.frame >> c >> r.sim_frame >> c >> r.sim_time_s >> c >> r.state >> c >> r.reset_count >> c >>
+        r.input_frame >> c >> r.elevator;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::vector<std::string> dds_args(int domain, const std::string& name) {
+  return {"--name", name, "--domain", std::to_string(domain), "--qos-file", runtime::default_qos_file()};
+}
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::unique_ptr<ChildProcess> start(const std::string& dir, const std::string& name, int domain,
+                                    const std::string& binary, const std::vector<std::string>& args) {
+  auto argv = concat(concat({bin(binary)}, dds_args(domain, name)), args);
+  return std::make_unique<ChildProcess>(argv, dir + "/" + name + ".log");
+}
+
+void send_run_state(runtime::Publisher<msg::SimCommand>& pub, msg::RunState state, std::uint32_t seq) {
+  msg::SimCommand cmd;
+  cmd.kind(msg::COMMAND_RUN_STATE);
+  cmd.issuer("test");
+  cmd.sequence_number(seq);
+  cmd.run_state(state);
+  pub.publish(cmd);
+}
+
+TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
+  const int domain = 130;
+  const std::string dir = temp_dir("lockstep");
+  auto a = start(dir, "a", domain, "fedsim-synthetic", {"--trace", dir + "/a.csv"});
+  auto b = start(dir, "b", domain, "fedsim-synthetic", {"--trace", dir + "/b.csv", "--work-us", "50"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "lockstep", "--rate", "100", "--scale", "1", "--expect", "a,b",
+                       "--frames", "400", "--shutdown-on-exit"});
+  runtime::ParticipantOptions o;
+  o.name = "test-instructor";
+  o.domain_id = domain;
+  o.qos_file = runtime::default_qos_file();
+  auto dds = runtime::DdsParticipant::create(o);
+  runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
+  ASSERT_TRUE(commands.wait_for_readers(3, std::chrono::seconds(10)));  // timing, a, b
+  // Wait for the run to start (a's trace grows), then freeze, run, reset.
+  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 2000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  send_run_state(commands, msg::RUN_STATE_FREEZE, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  send_run_state(commands, msg::RUN_STATE_RUN, 2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  send_run_state(commands, msg::RUN_STATE_RESET, 3);
+
+  ASSERT_TRUE(timing->wait(30)) << timing->output();
+  EXPECT_EQ(timing->exit_code(), 0) << timing->output();
+  ASSERT_TRUE(a->wait(10));
+  ASSERT_TRUE(b->wait(10));
+  EXPECT_EQ(a->exit_code(), 0) << a->output();
+  EXPECT_EQ(b->exit_code(), 0) << b->output();
+
+  const auto ta = read_trace(dir + "/a.csv");
+  const auto tb = read_trace(dir + "/b.csv");
+  ASSERT_EQ(ta.size(), 400u);
+  ASSERT_EQ(tb.size(), 400u);
+  bool saw_freeze = false, saw_reset = false;
+  for (std::size_t i = 0; i < ta.size(); ++i) {
+    // Every federate sees every tick once, in order, and the same tick contents.
+    EXPECT_EQ(ta[i].frame, i);
+    EXPECT_EQ(tb[i].frame, i);
+    EXPECT_EQ(ta[i].sim_frame, tb[i].sim_frame);
+    EXPECT_EQ(ta[i].state, tb[i].state);
+    if (i == 0) continue;
+    const auto& prev = ta[i - 1];
+    const auto& cur = ta[i];
+    if (cur.state == msg::RUN_STATE_FREEZE) {
+      saw_freeze = true;
+      if (prev.state != msg::RUN_STATE_RESET) EXPECT_EQ(cur.sim_frame, prev.sim_frame + (prev.state == msg::RUN_STATE_RUN));
+      EXPECT_DOUBLE_EQ(cur.sim_time_s, cur.sim_frame * 0.01);
+    } else if (cur.state == msg::RUN_STATE_RESET) {
+      saw_reset = true;
+      EXPECT_EQ(cur.sim_frame, 0u);
+      EXPECT_DOUBLE_EQ(cur.sim_time_s, 0.0);
+      EXPECT_EQ(cur.reset_count, prev.reset_count + 1);
+    } else if (prev.state == msg::RUN_STATE_RUN) {
+      EXPECT_EQ(cur.sim_frame, prev.sim_frame + 1);  // running frames advance sim time
+    }
+  }
+  EXPECT_TRUE(saw_freeze);
+  EXPECT_TRUE(saw_reset);
+  // Freeze held sim time for several frames.
+  int frozen_frames = 0;
+  for (const auto& r : ta) frozen_frames += r.state == msg::RUN_STATE_FREEZE;
+  EXPECT_GT(frozen_frames, 10);
+}
+
+TEST(Federation, KilledFederateIsReportedAndLockstepGoesOn) {
+  const int domain = 131;
+  const std::string dir = temp_dir("killed");
+  auto a = start(dir, "a", domain, "fedsim-synthetic", {"--trace", dir + "/a.csv"});
+  auto b = start(dir, "b", domain, "fedsim-synthetic", {});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "lockstep", "--rate", "100", "--scale", "1", "--expect", "a,b",
+                       "--frames", "500", "--ack-timeout", "3", "--shutdown-on-exit"});
+  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 1500; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  b->kill_hard();
+  ASSERT_TRUE(timing->wait(40)) << "lockstep hung after a federate died:\n" << timing->output();
+  EXPECT_EQ(timing->exit_code(), 0);
+  EXPECT_NE(timing->output().find("federate=b lost"), std::string::npos) << timing->output();
+  ASSERT_TRUE(a->wait(10));
+  EXPECT_EQ(read_trace(dir + "/a.csv").size(), 500u);
+}
+
+TEST(Federation, ScriptedIoPublishesTheProfileEveryFrame) {
+  const int domain = 132;
+  const std::string dir = temp_dir("io");
+  const std::string profile = dir + "/profile.csv";
+  std::ofstream(profile) << "time_s,elevator,throttle\n0,0,0.5\n2,0,0.5\n2,0.2,0.5\n3,-0.2,0.9\n";
+  auto io = start(dir, "io", domain, "fedsim-io", {"--profile", profile});
+  auto consumer = start(dir, "c", domain, "fedsim-synthetic", {"--input", "--trace", dir + "/c.csv"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "lockstep", "--expect", "io,c", "--frames", "250", "--shutdown-on-exit"});
+  ASSERT_TRUE(timing->wait(30)) << timing->output();
+  ASSERT_TRUE(consumer->wait(10));
+  ASSERT_TRUE(io->wait(10));
+  EXPECT_EQ(io->exit_code(), 0) << io->output();
+  const auto rows = read_trace(dir + "/c.csv");
+  ASSERT_EQ(rows.size(), 250u);
+  auto p = io::InputProfile::load_file(profile);
+  for (const auto& r : rows) {
+    if (r.frame == 0) continue;
+    // Step N reads the controls of frame N-1, computed at sim time (N-1) * 20 ms.
+    ASSERT_EQ(r.input_frame, static_cast<long long>(r.frame) - 1) << "frame " << r.frame;
+    EXPECT_NEAR(r.elevator, p.value(0, (r.frame - 1) * 0.02), 1e-6) << "frame " << r.frame;
+  }
+  EXPECT_NEAR(rows[101].elevator, 0.2, 1e-6);   // frame 100 = 2.0 s: the step
+  EXPECT_NEAR(rows[126].elevator, 0.0, 1e-6);   // 2.5 s: half way down the ramp
+}
+
+TEST(Federation, BadInputProfileStopsTheIoFederateWithFileAndLine) {
+  const std::string dir = temp_dir("badio");
+  std::ofstream(dir + "/bad.csv") << "time_s,elevator\n0,0\n1,oops\n";
+  auto io = start(dir, "io", 133, "fedsim-io", {"--profile", dir + "/bad.csv"});
+  ASSERT_TRUE(io->wait(10));
+  EXPECT_EQ(io->exit_code(), 2);
+  EXPECT_NE(io->output().find("bad.csv:3: elevator: 'oops' is not a number"), std::string::npos)
+      << io->output();
+}
+
+bool any_process_on_domain(int domain) {
+  const std::string needle = std::string("--domain") + '\0' + std::to_string(domain) + '\0';
+  DIR* proc = opendir("/proc");
+  bool found = false;
+  while (dirent* e = readdir(proc)) {
+    if (!std::isdigit(static_cast<unsigned char>(e->d_name[0]))) continue;
+    if (std::atoi(e->d_name) == getpid()) continue;
+    if (read_file(std::string("/proc/") + e->d_name + "/cmdline").find(needle) != std::string::npos) {
+      found = true;
+    }
+  }
+  closedir(proc);
+  return found;
+}
+
+TEST(Federation, LauncherRunsADeploymentAndLeavesNoProcessBehind) {
+  const int domain = 134;
+  const std::string dir = temp_dir("launcher");
+  std::ofstream(dir + "/profile.csv") << "time_s,elevator\n0,0\n1,0.1\n";
+  std::ofstream(dir + "/small.yaml") << R"(name: small
+mode: lockstep
+rate_hz: 50
+timing: {args: [--frames, "150", --scale, "1"]}
+federates:
+  - {name: io, binary: fedsim-io, args: [--profile, "${DEPLOY_DIR}/profile.csv"]}
+  - {name: consumer, binary: fedsim-synthetic, args: [--input, --trace, "${OUT_DIR}/c.csv"]}
+)";
+  ChildProcess run({bin("fedsim"), "run", dir + "/small.yaml", "--domain", std::to_string(domain),
+                    "--out", dir + "/out", "--quiet"},
+                   dir + "/run.log");
+  ASSERT_TRUE(run.wait(60)) << run.output();
+  EXPECT_EQ(run.exit_code(), 0) << run.output();
+  EXPECT_EQ(read_trace(dir + "/out/c.csv").size(), 150u);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/logs/io.log"));
+  EXPECT_FALSE(any_process_on_domain(domain));
+}
+
+TEST(Federation, LauncherStopsOnDurationAndFailsWhenAFederateFails) {
+  const int domain = 135;
+  const std::string dir = temp_dir("launcher2");
+  std::ofstream(dir + "/bad.csv") << "time_s,elevatorr\n0,0\n";
+  std::ofstream(dir + "/ok.csv") << "time_s,elevator\n0,0\n";
+  std::ofstream(dir + "/rt.yaml") << R"(name: rt
+mode: realtime
+federates:
+  - {name: io, binary: fedsim-io, args: [--profile, "${DEPLOY_DIR}/ok.csv"]}
+)";
+  ChildProcess run({bin("fedsim"), "run", dir + "/rt.yaml", "--domain", std::to_string(domain),
+                    "--duration", "3", "--out", dir + "/out"},
+                   dir + "/run.log");
+  ASSERT_TRUE(run.wait(30)) << run.output();
+  EXPECT_EQ(run.exit_code(), 0) << run.output();
+  EXPECT_FALSE(any_process_on_domain(domain));
+
+  std::ofstream(dir + "/bad.yaml") << R"(name: bad
+federates:
+  - {name: io, binary: fedsim-io, args: [--profile, "${DEPLOY_DIR}/bad.csv"]}
+)";
+  ChildProcess bad({bin("fedsim"), "run", dir + "/bad.yaml", "--domain", std::to_string(domain),
+                    "--out", dir + "/out2"},
+                   dir + "/bad.log");
+  ASSERT_TRUE(bad.wait(30)) << bad.output();
+  EXPECT_NE(bad.exit_code(), 0);
+  EXPECT_NE(bad.output().find("unknown channel 'elevatorr'"), std::string::npos) << bad.output();
+  EXPECT_FALSE(any_process_on_domain(domain));
+}
+
+TEST(Federation, EveryPacketStaysOnLoopback) {
+  if (std::system("command -v strace >/dev/null 2>&1") != 0) GTEST_SKIP() << "strace not installed";
+  const int domain = 136;
+  const std::string dir = temp_dir("confine");
+  auto a = std::make_unique<ChildProcess>(
+      concat({"/usr/bin/strace", "-f", "-e", "trace=sendto,sendmsg,sendmmsg,connect", "-o",
+              dir + "/strace.txt", bin("fedsim-synthetic")},
+             concat(dds_args(domain, "a"), {"--publish"})),
+      dir + "/a.log");
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "lockstep", "--expect", "a", "--frames", "300", "--shutdown-on-exit"});
+  ASSERT_TRUE(timing->wait(60)) << timing->output();
+  ASSERT_TRUE(a->wait(20));
+  const std::string trace = read_file(dir + "/strace.txt");
+  const std::regex address(R"re(inet_addr\("([0-9.]+)"\))re");
+  int loopback = 0;
+  for (auto it = std::sregex_iterator(trace.begin(), trace.end(), address); it != std::sregex_iterator(); ++it) {
+    EXPECT_EQ((*it)[1].str(), "127.0.0.1");
+    ++loopback;
+  }
+  EXPECT_GT(loopback, 100);  // it did talk
+}
+
+}  // namespace
+}  // namespace fedsim::testing
