@@ -1,7 +1,7 @@
 // Real federates as separate processes over DDS on 127.0.0.1: lockstep ordering, freeze, reset,
 // a killed federate, scripted I/O, the launcher, and network confinement. Each test uses its
 // own DDS domain so that ctest -j runs do not see each other.
-#include "child_process.hpp"
+#include "common/util/child_process.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "io/input_profile.hpp"
@@ -19,6 +19,12 @@
 
 namespace fedsim::testing {
 namespace {
+
+using util::ChildProcess;
+using util::read_file;
+using util::temp_dir;
+
+std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
 
 struct TraceRow {
   std::uint64_t frame, sim_frame;

@@ -169,15 +169,22 @@ class AircraftModel {
   struct Evaluation;
 
   void build_systems();
-  void evaluate(const RigidBodyState& state, Evaluation& eval);
+  void place_surfaces();
+  /// The force chain (executive steps 1-8) at a state; update_hysteresis for the present
+  /// state only (trial states of the integrator hold the stall flag).
+  void evaluate(const RigidBodyState& state, Evaluation& eval, bool update_hysteresis);
   void evaluate_current();
   void advance_systems(double dt_s);
   void integrate_body(double dt_s);
-  void fill_outputs(const RigidBodyState& state, const Evaluation& eval);
+  void fill_outputs();
+  void fill_engine_outputs();
+  void fill_contact_outputs();
   void update_mass_properties(bool force);
   void pin_origin(const GeodeticPosition& at);
   void restart_turbulence();
-  AircraftInitialConditions current_as_initial_conditions() const;
+  bool engine_burning(std::size_t engine) const;
+  PistonPowerplant::Inputs piston_inputs(std::size_t engine) const;
+  Turbofan::Inputs turbofan_inputs(std::size_t engine) const;
 
   AircraftPack pack_;
   Options options_;

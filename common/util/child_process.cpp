@@ -1,4 +1,4 @@
-#include "child_process.hpp"
+#include "common/util/child_process.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,9 +12,7 @@
 #include <sstream>
 #include <thread>
 
-namespace fedsim::testing {
-
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+namespace fedsim::util {
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, std::string log_path)
     : log_path_(std::move(log_path)) {
@@ -81,4 +79,4 @@ std::string temp_dir(const std::string& tag) {
   return dir.string();
 }
 
-}  // namespace fedsim::testing
+}  // namespace fedsim::util

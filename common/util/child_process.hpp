@@ -1,5 +1,5 @@
-// Starts fedsim binaries as child processes for integration tests: output to a log file, clean
-// or hard kill, wait with a timeout. Every child is killed when the test object goes away.
+// Starts a program as a child process (tests and benchmarks): output to a log file, clean or hard
+// kill, wait with a timeout. The child is killed when the object goes away or this process dies.
 #pragma once
 
 #include <sys/types.h>
@@ -7,10 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace fedsim::testing {
-
-/// Folder of the fedsim binaries (build/bin), set by CMake.
-std::string bin(const std::string& name);
+namespace fedsim::util {
 
 class ChildProcess {
  public:
@@ -37,7 +34,7 @@ class ChildProcess {
 
 /// Reads a whole file ("" if missing).
 std::string read_file(const std::string& path);
-/// A fresh temporary folder for one test.
+/// A fresh temporary folder (under $TMPDIR) named after `tag` and this process.
 std::string temp_dir(const std::string& tag);
 
-}  // namespace fedsim::testing
+}  // namespace fedsim::util

@@ -1,0 +1,828 @@
+// The aircraft executive: sub-models evaluated in one fixed order, forces and moments moved to
+// the CG, the rigid body integrated.
+#include "flight/model/aircraft/aircraft_model.hpp"
+
+#include <GeographicLib/Geodesic.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "flight/model/aircraft/pack_to_systems.hpp"
+#include "flight/model/environment/airspeed.hpp"
+#include "flight/model/environment/altimetry.hpp"
+
+namespace fedsim::flight {
+
+namespace {
+constexpr double kG0 = 9.80665;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr double kFeetToMetres = 0.3048;
+/// Quaternion constraint gain as k h (seed eqs 3.67-3.70: k h <= 1).
+constexpr double kQuaternionConstraintKh = 0.5;
+/// The equations of motion take new mass properties when the mass has changed by this
+/// fraction: a fuel-burn step changes it by ~1e-7, and each update validates the tensor (an
+/// eigen-decomposition). The CG used for the moment arms is always the current one.
+constexpr double kMassChangeForUpdate = 1e-6;
+/// Engine settling (trim, settled resets): shaft-speed integration step and the largest
+/// simulated time; a step that changes the rpm by less than the tolerance ends it.
+constexpr double kSettleStepS = 0.01;
+constexpr int kSettleMaxSteps = 6000;
+constexpr double kSettleRelativeTolerance = 1e-10;
+/// A time step long enough for the exact spool lags of a turbofan to reach their target.
+constexpr double kSpoolSettleS = 1.0e4;
+
+EarthModelConfig earth_config(const AircraftModel::Options& options, double lat_rad,
+                              double lon_rad) {
+  EarthModelConfig config;
+  config.kind = options.earth;
+  config.flat_gravity_mps2 = options.flat_earth_gravity_mps2;
+  config.origin_lat_rad = lat_rad;
+  config.origin_lon_rad = lon_rad;
+  return config;
+}
+
+MassProperties mass_properties_of(const MassBalance::Outputs& mass) {
+  return MassProperties{mass.mass_kg, mass.inertia_kgm2};
+}
+
+bool any_retractable(const LandingGearSpec& gear) {
+  return std::any_of(gear.contacts.begin(), gear.contacts.end(),
+                     [](const GearContactSpec& c) { return c.retractable; });
+}
+
+double position_of(const std::optional<Actuator>& actuator) {
+  return actuator ? actuator->outputs().position_rad : 0.0;
+}
+
+void step_actuator(std::optional<Actuator>& actuator, double dt_s, double command) {
+  if (actuator) actuator->step(dt_s, Actuator::Inputs{command});
+}
+
+void place_actuator(std::optional<Actuator>& actuator, double command) {
+  if (actuator) actuator->reset(actuator->demand_for(command));
+}
+
+/// Angle of attack and sideslip of an air-relative body velocity (defined everywhere: both
+/// are 0 at zero airspeed) and their rates from its body-frame rate of change.
+void alpha_beta_rates(const Eigen::Vector3d& v, const Eigen::Vector3d& v_dot, double& alpha_dot,
+                      double& beta_dot) {
+  const double uw2 = v.x() * v.x() + v.z() * v.z();
+  const double speed2 = uw2 + v.y() * v.y();
+  constexpr double kMinSpeed2 = 1e-2;  // below 0.1 m/s the angles swing freely: rates 0
+  if (uw2 < kMinSpeed2 || speed2 < kMinSpeed2) {
+    alpha_dot = 0.0;
+    beta_dot = 0.0;
+    return;
+  }
+  const double uw = std::sqrt(uw2);
+  alpha_dot = (v.x() * v_dot.z() - v.z() * v_dot.x()) / uw2;
+  const double uw_dot = (v.x() * v_dot.x() + v.z() * v_dot.z()) / uw;
+  beta_dot = (uw * v_dot.y() - v.y() * uw_dot) / speed2;
+}
+}  // namespace
+
+// ---- Sub-model holders -----------------------------------------------------------------------
+
+struct AircraftModel::Engine {
+  EngineType type = EngineType::piston_propeller;
+  std::optional<PistonPowerplant> piston;
+  std::optional<Turbofan> turbofan;
+  double idle_rpm = 0.0;
+  bool running = true;  // ignition and fuel selected on
+  bool failed = false;  // instructor failure
+};
+
+struct AircraftModel::Surfaces {
+  std::optional<Actuator> elevator, aileron, rudder, flaps, speedbrake, spoilers;
+  std::optional<Actuator> gear;  // 0 up .. 1 down, at the pack's transit rate
+  bool retractable_gear = false;
+  double flap_position_at_full = 1.0;  // actuator position at flap command 1 (rad or 1)
+  double flap_full_travel_rad = 0.0;
+};
+
+/// Everything one evaluation of the force chain works out, in executive order.
+struct AircraftModel::Evaluation {
+  // Kinematics of the state.
+  GeodeticPosition geodetic;
+  Eigen::Matrix3d ref_from_body = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d ned_from_body = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_wrt_earth_b = Eigen::Vector3d::Zero();
+  double height_agl_m = 0.0;
+  double north_m = 0.0, east_m = 0.0;
+  // 1 atmosphere.
+  AirProperties air;
+  // 2 weather.
+  Eigen::Vector3d steady_wind_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();
+  // 4 air data.
+  Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
+  double tas_mps = 0.0, alpha_rad = 0.0, beta_rad = 0.0, mach = 0.0, qbar_pa = 0.0;
+  // 5-7 forces (body axes) and moments about the CG.
+  Aerodynamics::Outputs aero;
+  Eigen::Vector3d aero_force_b = Eigen::Vector3d::Zero(), aero_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d prop_force_b = Eigen::Vector3d::Zero(), prop_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gear_force_b = Eigen::Vector3d::Zero(), gear_moment_cg = Eigen::Vector3d::Zero();
+  Wrench wrench;
+  // Accelerations (current evaluation only).
+  RigidBodyAccelerations accelerations;
+  Eigen::Vector3d velocity_b_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_b_dot_mps2 = Eigen::Vector3d::Zero();
+};
+
+// ---- Construction ----------------------------------------------------------------------------
+
+void AircraftModel::Options::validate() const {
+  if (substeps < 1 || substeps > 1000) {
+    throw std::invalid_argument("options.substeps must be 1..1000, got " + std::to_string(substeps));
+  }
+  if (!std::isfinite(runway_elevation_m) || std::abs(runway_elevation_m) > 10000.0) {
+    throw std::invalid_argument("options.runway_elevation_m must be finite and within +-10 km");
+  }
+  if (!(flat_earth_gravity_mps2 > 0.0) || !std::isfinite(flat_earth_gravity_mps2)) {
+    throw std::invalid_argument("options.flat_earth_gravity_mps2 must be positive");
+  }
+}
+
+AircraftModel::AircraftModel(AircraftPack pack, Options options)
+    : pack_(std::move(pack)),
+      options_((options.validate(), options)),
+      runway_elevation_m_(options_.runway_elevation_m),
+      aerodynamics_(pack_),
+      gear_(std::make_unique<LandingGear>(landing_gear_params(pack_.landing_gear))),
+      mass_(std::make_unique<MassBalance>(mass_balance_params(pack_.mass, pack_.engines))),
+      dynamics_(EarthModel(earth_config(options_, 0.0, 0.0)), mass_properties_of(mass_->outputs())),
+      integrator_(options_.integrator),
+      current_(std::make_unique<Evaluation>()),
+      trial_(std::make_unique<Evaluation>()) {
+  build_systems();
+  AircraftInitialConditions parked;
+  parked.position.alt_m = 1000.0;
+  parked.engines_running = false;
+  parked.settle_engines = false;
+  reset(parked);
+}
+
+AircraftModel::~AircraftModel() = default;
+
+void AircraftModel::build_systems() {
+  if (pack_.engines.size() > kMaxEngines) {
+    throw std::invalid_argument("aircraft pack '" + pack_.metadata.name + "' has " +
+                                std::to_string(pack_.engines.size()) + " engines; at most " +
+                                std::to_string(kMaxEngines) + " are supported");
+  }
+  const FlightControlsSpec& fc = pack_.flight_controls;
+  surfaces_ = std::make_unique<Surfaces>();
+  Surfaces& s = *surfaces_;
+  if (fc.elevator) s.elevator.emplace(actuator_params(*fc.elevator));
+  if (fc.aileron) s.aileron.emplace(actuator_params(*fc.aileron));
+  if (fc.rudder) s.rudder.emplace(actuator_params(*fc.rudder));
+  if (fc.flaps) {
+    s.flaps.emplace(kinematic_actuator_params(*fc.flaps));
+    s.flap_position_at_full = s.flaps->params().deflection_at_plus_one_rad;
+    s.flap_full_travel_rad = fc.flaps->full_travel_rad;
+  }
+  if (fc.speedbrake) s.speedbrake.emplace(kinematic_actuator_params(*fc.speedbrake));
+  if (fc.spoilers) s.spoilers.emplace(kinematic_actuator_params(*fc.spoilers));
+  s.retractable_gear = any_retractable(pack_.landing_gear);
+  if (s.retractable_gear) {
+    Actuator::Params gear;
+    gear.command_min = 0.0;
+    gear.deflection_at_plus_one_rad = 1.0;
+    gear.position_min_rad = 0.0;
+    gear.position_max_rad = 1.0;
+    gear.rate_limit_radps = 1.0 / pack_.landing_gear.transit_time_s;
+    s.gear.emplace(gear);
+  }
+
+  engines_.clear();
+  for (const EngineSpec& spec : pack_.engines) {
+    Engine engine;
+    engine.type = spec.type;
+    if (spec.type == EngineType::piston_propeller) {
+      engine.piston.emplace(piston_powerplant_params(spec));
+      engine.idle_rpm = spec.piston.idle_rpm;
+    } else {
+      engine.turbofan.emplace(turbofan_params(spec));
+    }
+    engines_.push_back(std::move(engine));
+  }
+
+  contact_kinematics_.resize(pack_.landing_gear.contacts.size());
+  fuel_flows_kgps_.assign(engines_.size(), 0.0);
+  outputs_.engines.resize(engines_.size());
+  for (std::size_t i = 0; i < engines_.size(); ++i) outputs_.engines[i].type = engines_[i].type;
+  outputs_.contacts.resize(pack_.landing_gear.contacts.size());
+  for (std::size_t i = 0; i < outputs_.contacts.size(); ++i) {
+    outputs_.contacts[i].name = pack_.landing_gear.contacts[i].name;
+  }
+  outputs_.tank_fuel_kg.resize(pack_.mass.fuel_tanks.size());
+  restart_turbulence();
+}
+
+// ---- Run control -----------------------------------------------------------------------------
+
+void AircraftModel::reset(const AircraftInitialConditions& initial) {
+  initial.validate();
+  if (!initial.fuel_kg.empty() && initial.fuel_kg.size() != pack_.mass.fuel_tanks.size()) {
+    throw std::invalid_argument("initial conditions: fuel_kg has " +
+                                std::to_string(initial.fuel_kg.size()) + " tanks, the pack " +
+                                std::to_string(pack_.mass.fuel_tanks.size()));
+  }
+  time_s_ = 0.0;
+  outputs_.numerical_fault = false;
+  mass_->reset();
+  for (std::size_t i = 0; i < initial.fuel_kg.size(); ++i) {
+    mass_->set_tank_contents_kg(i, initial.fuel_kg[i]);
+  }
+  update_mass_properties(true);
+  for (Engine& engine : engines_) {
+    engine.running = initial.engines_running;
+    if (engine.piston) engine.piston->reset(engine.running ? engine.idle_rpm : 0.0);
+    if (engine.turbofan) engine.turbofan->reset(engine.running);
+  }
+  aerodynamics_.reset();
+  if (turbulence_) turbulence_->reset();
+  place_surfaces();
+  set_state(initial);
+  if (initial.settle_engines) settle_systems();
+}
+
+void AircraftModel::step(double frame_dt_s) {
+  if (!(frame_dt_s > 0.0) || !std::isfinite(frame_dt_s)) return;
+  const double h = frame_dt_s / static_cast<double>(options_.substeps);
+  for (int i = 0; i < options_.substeps; ++i) {
+    if (!current_valid_) evaluate_current();
+    const RigidBodyDynamics::StateVector previous = x_;
+    advance_systems(h);
+    integrate_body(h);
+    if (!x_.allFinite()) {
+      // Never publish NaN: drop the step, keep the last finite state and say so.
+      x_ = previous;
+      integrator_.restart();
+      outputs_.numerical_fault = true;
+    }
+    time_s_ += h;
+    evaluate_current();
+  }
+  fill_outputs();
+}
+
+void AircraftModel::set_controls(const AircraftControls& controls) {
+  const AircraftControls c = controls.clamped();
+  // Brakes and steering act on the ground reactions directly (no actuator state): the
+  // evaluation at the present state must be redone before the next step uses it.
+  if (c.brake_left != controls_.brake_left || c.brake_right != controls_.brake_right ||
+      c.steering != controls_.steering) {
+    current_valid_ = false;
+  }
+  controls_ = c;
+}
+
+// ---- Environment and failures ----------------------------------------------------------------
+
+void AircraftModel::set_weather(const WeatherSettings& weather) {
+  weather.validate();
+  weather_ = weather;
+  atmosphere_ = Atmosphere(weather_.atmosphere);
+  wind_ = WindProfile(weather_.wind);
+  microburst_ = WindShear(weather_.microburst);
+  restart_turbulence();
+  evaluate_current();
+  fill_outputs();
+}
+
+void AircraftModel::restart_turbulence() {
+  if (weather_.turbulence == Turbulence::Severity::kNone) {
+    turbulence_.reset();
+  } else {
+    const std::uint64_t seed = weather_.turbulence_seed.value_or(options_.turbulence_seed);
+    turbulence_ = std::make_unique<Turbulence>(
+        Turbulence::Params::for_severity(weather_.turbulence, pack_.geometry.wing_span_m, seed));
+  }
+  gusts_active_ = false;
+}
+
+void AircraftModel::set_engine_failed(std::size_t engine, bool failed) {
+  if (engine < engines_.size()) engines_[engine].failed = failed;
+}
+
+bool AircraftModel::engine_failed(std::size_t engine) const {
+  return engine < engines_.size() && engines_[engine].failed;
+}
+
+void AircraftModel::set_runway_elevation_m(double elevation_m) {
+  if (!std::isfinite(elevation_m)) return;
+  runway_elevation_m_ = elevation_m;
+  current_valid_ = false;
+}
+
+void AircraftModel::set_integration_method(IntegrationMethod method) {
+  integrator_.set_method(method);
+  options_.integrator = method;
+}
+
+// ---- Repositioning ---------------------------------------------------------------------------
+
+TrimResult AircraftModel::reposition_to_point(const GeodeticPosition& position, double heading_rad,
+                                              double tas_mps) {
+  TrimRequest request;
+  request.kind = TrimKind::kLevel;
+  request.position = position;
+  request.heading_rad = heading_rad;
+  request.airspeed_mps = tas_mps;
+  request.controls = controls_;
+  return Trim(*this).solve(request);
+}
+
+TrimResult AircraftModel::reposition_to_runway(const Runway& runway) {
+  set_runway_elevation_m(runway.threshold.alt_m);
+  TrimRequest request;
+  request.kind = TrimKind::kGround;
+  request.position = runway.threshold;
+  request.heading_rad = runway.heading_rad;
+  request.controls = controls_;
+  request.controls.gear_down = true;
+  return Trim(*this).solve(request);
+}
+
+TrimResult AircraftModel::reposition_to_approach_gate(const Runway& runway, double distance_m,
+                                                      double tas_mps, double glide_path_rad) {
+  // The gate lies distance_m back along the centreline (geodesic, WGS-84), on the glide path
+  // through the 50 ft threshold crossing height (ICAO Annex 14 / PANS-OPS reference datum).
+  constexpr double kThresholdCrossingHeightM = 50.0 * kFeetToMetres;
+  double lat_deg = 0.0, lon_deg = 0.0;
+  const double back_azimuth_deg = runway.heading_rad * kRadToDeg + 180.0;
+  GeographicLib::Geodesic::WGS84().Direct(runway.threshold.lat_rad * kRadToDeg,
+                                          runway.threshold.lon_rad * kRadToDeg, back_azimuth_deg,
+                                          distance_m, lat_deg, lon_deg);
+  set_runway_elevation_m(runway.threshold.alt_m);
+  TrimRequest request;
+  request.kind = TrimKind::kClimb;
+  request.position.lat_rad = lat_deg / kRadToDeg;
+  request.position.lon_rad = lon_deg / kRadToDeg;
+  request.position.alt_m =
+      runway.threshold.alt_m + kThresholdCrossingHeightM + distance_m * std::tan(glide_path_rad);
+  request.heading_rad = runway.heading_rad;
+  request.airspeed_mps = tas_mps;
+  request.flight_path_rad = -glide_path_rad;
+  request.controls = controls_;
+  return Trim(*this).solve(request);
+}
+
+// ---- State placement -------------------------------------------------------------------------
+
+void AircraftModel::pin_origin(const GeodeticPosition& at) {
+  origin_ = {at.lat_rad, at.lon_rad, 0.0};
+  origin_meridian_radius_m_ = Wgs84::meridian_radius_m(at.lat_rad);
+  origin_parallel_radius_m_ = Wgs84::prime_vertical_radius_m(at.lat_rad) * std::cos(at.lat_rad);
+  if (options_.earth == EarthModelKind::kFlat) {
+    dynamics_ = RigidBodyDynamics(EarthModel(earth_config(options_, at.lat_rad, at.lon_rad)),
+                                  dynamics_.mass_properties());
+  }
+}
+
+void AircraftModel::set_state(const AircraftInitialConditions& state) {
+  state.validate();
+  pin_origin(state.position);
+  InitialConditions body;
+  body.position = state.position;
+  body.velocity_ned_mps = state.velocity_frame == AircraftInitialConditions::VelocityFrame::kNed
+                              ? state.velocity_mps
+                              : Eigen::Vector3d(dcm_from_euler(state.attitude) * state.velocity_mps);
+  body.attitude = state.attitude;
+  body.omega_b_rps = state.omega_b_rps;
+  body.omega_relative_to_earth = state.omega_relative_to_earth;
+  x_ = RigidBodyDynamics::pack(dynamics_.initial_state(body));
+  integrator_.restart();
+  alpha_dot_radps_ = 0.0;
+  beta_dot_radps_ = 0.0;
+  gusts_active_ = false;  // no gust until the turbulence next steps (trim sees calm air)
+  evaluate_current();
+  fill_outputs();
+}
+
+void AircraftModel::place_surfaces() {
+  Surfaces& s = *surfaces_;
+  place_actuator(s.elevator, controls_.elevator_command());
+  place_actuator(s.aileron, controls_.aileron_command());
+  place_actuator(s.rudder, controls_.rudder_command());
+  place_actuator(s.flaps, controls_.flaps);
+  place_actuator(s.speedbrake, controls_.speedbrake);
+  place_actuator(s.spoilers, controls_.spoilers);
+  place_actuator(s.gear, controls_.gear_down ? 1.0 : 0.0);
+}
+
+void AircraftModel::settle_systems() {
+  place_surfaces();
+  evaluate_current();  // air data with the surfaces in place, for the engines
+  for (std::size_t i = 0; i < engines_.size(); ++i) {
+    Engine& engine = engines_[i];
+    if (engine.turbofan) {
+      const Turbofan::Inputs in = turbofan_inputs(i);
+      engine.turbofan->step(kSpoolSettleS, in);  // exact lags: at the target
+      engine.turbofan->step(kSpoolSettleS, in);
+      continue;
+    }
+    const PistonPowerplant::Inputs in = piston_inputs(i);
+    double previous_rpm = engine.piston->outputs().engine_rpm;
+    for (int n = 0; n < kSettleMaxSteps; ++n) {
+      engine.piston->step(kSettleStepS, in);
+      const double rpm = engine.piston->outputs().engine_rpm;
+      if (std::abs(rpm - previous_rpm) <= kSettleRelativeTolerance * std::max(rpm, 1.0)) break;
+      previous_rpm = rpm;
+    }
+  }
+  evaluate_current();
+  fill_outputs();
+}
+
+// ---- Sub-model inputs ------------------------------------------------------------------------
+
+bool AircraftModel::engine_burning(std::size_t i) const {
+  const Engine& engine = engines_[i];
+  const auto& starved = mass_->outputs().engine_starved;
+  return engine.running && !(i < starved.size() && starved[i]);
+}
+
+PistonPowerplant::Inputs AircraftModel::piston_inputs(std::size_t i) const {
+  const Evaluation& e = *current_;
+  PistonPowerplant::Inputs in;
+  in.throttle = controls_.throttle[i];
+  in.mixture = controls_.mixture[i];
+  in.propeller_lever = controls_.propeller[i];
+  in.running = engine_burning(i);
+  in.failed = engines_[i].failed;
+  in.pressure_pa = e.air.pressure_pa;
+  in.temperature_k = e.air.temperature_k;
+  in.density_kgpm3 = e.air.density_kgpm3;
+  in.speed_of_sound_mps = e.air.speed_of_sound_mps;
+  in.air_velocity_b_mps = e.air_velocity_b_mps;
+  return in;
+}
+
+Turbofan::Inputs AircraftModel::turbofan_inputs(std::size_t i) const {
+  const Evaluation& e = *current_;
+  Turbofan::Inputs in;
+  in.throttle = controls_.throttle[i];
+  in.running = engine_burning(i);
+  in.failed = engines_[i].failed;
+  in.mach = e.mach;
+  in.density_kgpm3 = e.air.density_kgpm3;
+  in.temperature_k = e.air.temperature_k;
+  return in;
+}
+
+// ---- The executive order ---------------------------------------------------------------------
+
+void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool update_hysteresis) {
+  const EarthModel& earth = dynamics_.earth();
+  const MassBalance::Outputs& mass = mass_->outputs();
+  const Eigen::Vector3d& cg = mass.cg_m;
+
+  // Kinematics of the state in local terms.
+  e.ref_from_body = dcm_from_quaternion(state.attitude);
+  e.geodetic = earth.geodetic(state.position_m);
+  const Eigen::Matrix3d ned_from_ref = earth.ned_from_reference(e.geodetic);
+  e.ned_from_body = ned_from_ref * e.ref_from_body;
+  const Eigen::Matrix3d body_from_ned = e.ned_from_body.transpose();
+  e.velocity_ned_mps = ned_from_ref * state.velocity_mps;
+  e.omega_wrt_earth_b = state.omega_b_rps - e.ref_from_body.transpose() * earth.frame_rate_rps();
+  e.height_agl_m = e.geodetic.alt_m - runway_elevation_m_;
+  if (options_.earth == EarthModelKind::kFlat) {
+    e.north_m = state.position_m.x();
+    e.east_m = state.position_m.y();
+  } else {
+    e.north_m = (e.geodetic.lat_rad - origin_.lat_rad) * origin_meridian_radius_m_;
+    e.east_m = wrap_pi(e.geodetic.lon_rad - origin_.lon_rad) * origin_parallel_radius_m_;
+  }
+
+  // 1. Atmosphere at the CG altitude.
+  e.air = atmosphere_.at(e.geodetic.alt_m);
+
+  // 2. Weather: steady wind, microburst, turbulence (the gusts of the present step are held).
+  e.steady_wind_ned_mps = wind_.at(e.geodetic.alt_m).wind_ned_mps;
+  e.wind_ned_mps = e.steady_wind_ned_mps;
+  if (microburst_.params().max_outflow_mps > 0.0) {
+    e.wind_ned_mps += microburst_.wind_ned_mps(e.north_m, e.east_m, e.height_agl_m);
+  }
+  if (turbulence_ && gusts_active_) {
+    e.gust_ned_mps = turbulence_->outputs().gust_ned_mps;
+    e.gust_rates_b_rps = turbulence_->outputs().gust_rates_b_radps;
+  } else {
+    e.gust_ned_mps.setZero();
+    e.gust_rates_b_rps.setZero();
+  }
+  e.wind_ned_mps += e.gust_ned_mps;
+
+  // 3. Flight controls: the actuators' positions (advanced once per step).
+  const Surfaces& s = *surfaces_;
+  const double flap_norm = position_of(s.flaps) / s.flap_position_at_full;
+  const double gear_norm = s.retractable_gear ? position_of(s.gear) : 1.0;
+
+  // 4. Air data.
+  e.air_velocity_b_mps = body_from_ned * (e.velocity_ned_mps - e.wind_ned_mps);
+  const Eigen::Vector3d& va = e.air_velocity_b_mps;
+  e.tas_mps = va.norm();
+  e.alpha_rad = std::atan2(va.z(), va.x());
+  e.beta_rad = std::atan2(va.y(), std::hypot(va.x(), va.z()));
+  e.mach = mach_number(e.tas_mps, e.air);
+  e.qbar_pa = dynamic_pressure_pa(e.tas_mps, e.air);
+
+  // 5. Propulsion: each engine's force and moment about the datum (held over the step).
+  e.prop_force_b.setZero();
+  Eigen::Vector3d prop_moment_datum = Eigen::Vector3d::Zero();
+  e.wrench.rotor_momentum_b_kgm2ps.setZero();
+  for (const Engine& engine : engines_) {
+    if (engine.piston) {
+      const PistonPowerplant::Outputs& out = engine.piston->outputs();
+      e.prop_force_b += out.force_b_n;
+      prop_moment_datum += out.moment_datum_b_nm;
+      if (options_.engine_gyroscopic_moments) {
+        e.wrench.rotor_momentum_b_kgm2ps += out.rotor_angular_momentum_b_kgm2ps;
+      }
+    } else {
+      const Turbofan::Outputs& out = engine.turbofan->outputs();
+      e.prop_force_b += out.force_b_n;
+      prop_moment_datum += out.moment_datum_b_nm;
+    }
+  }
+  e.prop_moment_cg = prop_moment_datum - cg.cross(e.prop_force_b);
+
+  // 6. Aerodynamics about the aero reference point, moved to the CG. Rates relative to the air
+  // mass: the earth-relative body rates minus the turbulence gust rates (Etkin).
+  const Eigen::Vector3d arp_from_cg = pack_.geometry.aero_reference_point_m - cg;
+  Aerodynamics::Inputs aero_in;
+  aero_in.alpha_rad = e.alpha_rad;
+  aero_in.beta_rad = e.beta_rad;
+  aero_in.tas_mps = e.tas_mps;
+  aero_in.mach = e.mach;
+  aero_in.qbar_pa = e.qbar_pa;
+  aero_in.omega_air_b = e.omega_wrt_earth_b - e.gust_rates_b_rps;
+  aero_in.alphadot_radps = alpha_dot_radps_;
+  aero_in.betadot_radps = beta_dot_radps_;
+  aero_in.elevator_rad = position_of(s.elevator);
+  aero_in.aileron_rad = position_of(s.aileron);
+  aero_in.rudder_rad = position_of(s.rudder);
+  aero_in.flap_norm = flap_norm;
+  aero_in.gear_norm = gear_norm;
+  aero_in.speedbrake_norm = position_of(s.speedbrake);
+  aero_in.spoiler_norm = position_of(s.spoilers);
+  aero_in.aero_rp_height_agl_m = e.height_agl_m - (e.ned_from_body * arp_from_cg).z();
+  e.aero = update_hysteresis ? aerodynamics_.evaluate(aero_in)
+                             : aerodynamics_.compute(aero_in, aerodynamics_.stall_hysteresis_active());
+  e.aero_force_b = e.aero.force_b;
+  e.aero_moment_cg = e.aero.moment_b + arp_from_cg.cross(e.aero.force_b);
+
+  // 7. Ground reactions on the runway plane.
+  LandingGear::contact_kinematics(gear_->params(), Eigen::Vector3d(0.0, 0.0, -e.geodetic.alt_m),
+                                  e.velocity_ned_mps, body_from_ned, e.omega_wrt_earth_b, cg,
+                                  contact_kinematics_);
+  LandingGear::Inputs gear_in;
+  gear_in.contacts = contact_kinematics_;
+  gear_in.dcm_ned_to_body = body_from_ned;
+  gear_in.runway_elevation_m = runway_elevation_m_;
+  gear_in.steering = controls_.steering;
+  gear_in.brake_left = controls_.brake_left;
+  gear_in.brake_right = controls_.brake_right;
+  gear_in.gear_down = !s.retractable_gear || position_of(s.gear) >= 1.0;
+  gear_->step(0.0, gear_in);
+  e.gear_force_b = gear_->outputs().force_b_n;
+  e.gear_moment_cg = gear_->outputs().moment_datum_b_nm - cg.cross(e.gear_force_b);
+
+  // 8. Mass balance: mass, CG and inertia as the last fuel burn left them (the CG above).
+
+  // The wrench for 9, the equations of motion.
+  e.wrench.force_b_n = e.aero_force_b + e.prop_force_b + e.gear_force_b;
+  e.wrench.moment_b_nm = e.aero_moment_cg + e.prop_moment_cg + e.gear_moment_cg;
+}
+
+void AircraftModel::advance_systems(double dt_s) {
+  // The sub-models with a state move from the conditions of the present evaluation, in the
+  // executive order (1 atmosphere and 4 air data have no state).
+  const Evaluation& e = *current_;
+
+  // 2. Weather: the turbulence filters.
+  if (turbulence_) {
+    Turbulence::Inputs in;
+    in.tas_mps = e.tas_mps;
+    in.height_agl_m = e.height_agl_m;
+    in.dcm_ned_to_body = e.ned_from_body.transpose();
+    in.mean_wind_ned_mps = e.steady_wind_ned_mps;
+    turbulence_->step(dt_s, in);
+    gusts_active_ = true;
+  }
+
+  // 3. Flight controls.
+  Surfaces& s = *surfaces_;
+  step_actuator(s.elevator, dt_s, controls_.elevator_command());
+  step_actuator(s.aileron, dt_s, controls_.aileron_command());
+  step_actuator(s.rudder, dt_s, controls_.rudder_command());
+  step_actuator(s.flaps, dt_s, controls_.flaps);
+  step_actuator(s.speedbrake, dt_s, controls_.speedbrake);
+  step_actuator(s.spoilers, dt_s, controls_.spoilers);
+  step_actuator(s.gear, dt_s, controls_.gear_down ? 1.0 : 0.0);
+
+  // 5. Propulsion.
+  for (std::size_t i = 0; i < engines_.size(); ++i) {
+    Engine& engine = engines_[i];
+    if (engine.piston) {
+      engine.piston->step(dt_s, piston_inputs(i));
+      fuel_flows_kgps_[i] = engine.piston->outputs().fuel_flow_kgps;
+    } else {
+      engine.turbofan->step(dt_s, turbofan_inputs(i));
+      fuel_flows_kgps_[i] = engine.turbofan->outputs().fuel_flow_kgps;
+    }
+  }
+
+  // 6. Aerodynamics: the stall hysteresis follows alpha in evaluate_current().
+
+  // 8. Mass balance: burn the fuel.
+  MassBalance::Inputs burn;
+  burn.engine_fuel_flow_kgps = fuel_flows_kgps_;
+  mass_->step(dt_s, burn);
+  update_mass_properties(false);
+}
+
+void AircraftModel::integrate_body(double dt_s) {
+  // 9. Equations of motion: the first derivative is the present evaluation's; the integrator's
+  // trial states re-evaluate the force chain (held engines and actuators).
+  const double correction =
+      RigidBodyDynamics::quaternion_correction_per_s(x_, kQuaternionConstraintKh, dt_s);
+  const RigidBodyDynamics::StateVector f0 = dynamics_.derivative(x_, current_->wrench, correction);
+  auto derivative = [this, correction](double, const RigidBodyDynamics::StateVector& x) {
+    evaluate(RigidBodyDynamics::unpack(x), *trial_, false);
+    return dynamics_.derivative(x, trial_->wrench, correction);
+  };
+  integrator_.step_from(time_s_, dt_s, x_, f0, derivative);
+}
+
+void AircraftModel::evaluate_current() {
+  const RigidBodyState state = RigidBodyDynamics::unpack(x_);
+  Evaluation& e = *current_;
+  evaluate(state, e, true);
+  e.accelerations = dynamics_.accelerations(state, e.wrench);
+  // Body-frame rate of change of (u, v, w): the reference-frame acceleration less the
+  // rotation of the body axes relative to that frame.
+  const Eigen::Matrix3d body_from_ref = e.ref_from_body.transpose();
+  e.velocity_b_mps = body_from_ref * state.velocity_mps;
+  const Eigen::Vector3d omega_rel_b =
+      state.omega_b_rps - body_from_ref * dynamics_.earth().frame_rate_rps();
+  e.velocity_b_dot_mps2 = e.accelerations.acceleration_b_mps2 - omega_rel_b.cross(e.velocity_b_mps);
+  // alpha-dot and beta-dot for the next evaluations (JSBSim likewise uses the last frame's):
+  // the air-relative velocity changes as the ground-relative one (wind changes neglected).
+  alpha_beta_rates(e.air_velocity_b_mps, e.velocity_b_dot_mps2, alpha_dot_radps_, beta_dot_radps_);
+  current_valid_ = true;
+}
+
+void AircraftModel::update_mass_properties(bool force) {
+  const MassBalance::Outputs& mass = mass_->outputs();
+  if (force || std::abs(mass.mass_kg - mass_used_by_dynamics_kg_) >
+                   kMassChangeForUpdate * mass.mass_kg) {
+    dynamics_.set_mass_properties(mass_properties_of(mass));
+    mass_used_by_dynamics_kg_ = mass.mass_kg;
+  }
+}
+
+// ---- Outputs ---------------------------------------------------------------------------------
+
+void AircraftModel::fill_outputs() {
+  const Evaluation& e = *current_;
+  const RigidBodyState state = RigidBodyDynamics::unpack(x_);
+  const MassBalance::Outputs& mass = mass_->outputs();
+  AircraftOutputs& o = outputs_;
+  o.time_s = time_s_;
+
+  o.geodetic = e.geodetic;
+  o.height_agl_m = e.height_agl_m;
+  o.position_ecef_m = dynamics_.earth().ecef(state.position_m);
+  o.north_m = e.north_m;
+  o.east_m = e.east_m;
+
+  o.velocity_ned_mps = e.velocity_ned_mps;
+  o.velocity_b_mps = e.velocity_b_mps;
+  o.ground_speed_mps = std::hypot(e.velocity_ned_mps.x(), e.velocity_ned_mps.y());
+  o.climb_rate_mps = -e.velocity_ned_mps.z();
+
+  o.ned_from_body = e.ned_from_body;
+  o.euler = euler_from_dcm(e.ned_from_body);
+  Eigen::Quaterniond q(e.ned_from_body);
+  if (q.w() < 0.0) q.coeffs() *= -1.0;  // scalar part >= 0: one of the two equal quaternions
+  o.q_ned_to_body = to_e0123(q.normalized());
+
+  o.omega_b_rps = state.omega_b_rps;
+  o.omega_b_wrt_earth_rps = e.omega_wrt_earth_b;
+  o.omega_dot_b_rps2 = e.accelerations.omega_dot_b_rps2;
+  o.acceleration_b_mps2 = e.accelerations.acceleration_b_mps2;
+  o.velocity_b_dot_mps2 = e.velocity_b_dot_mps2;
+  o.specific_force_cg_b_mps2 = e.accelerations.specific_force_b_mps2;
+  o.specific_force_eye_b_mps2 = RigidBodyDynamics::specific_force_at_b(
+      e.accelerations, state.omega_b_rps, pack_.geometry.pilot_eye_point_m - mass.cg_m);
+  o.load_factor_z = -o.specific_force_cg_b_mps2.z() / kG0;
+
+  o.tas_mps = e.tas_mps;
+  o.cas_mps = cas_from_tas_mps(e.tas_mps, e.air);
+  o.eas_mps = eas_from_tas_mps(e.tas_mps, e.air);
+  o.mach = e.mach;
+  o.alpha_rad = e.alpha_rad;
+  o.beta_rad = e.beta_rad;
+  o.alpha_dot_radps = alpha_dot_radps_;
+  o.beta_dot_radps = beta_dot_radps_;
+  o.qbar_pa = e.qbar_pa;
+  o.static_pressure_pa = e.air.pressure_pa;
+  o.temperature_k = e.air.temperature_k;
+  o.density_kgpm3 = e.air.density_kgpm3;
+  o.speed_of_sound_mps = e.air.speed_of_sound_mps;
+  o.pressure_altitude_m = pressure_altitude_m(e.air.pressure_pa);
+  o.wind_ned_mps = e.wind_ned_mps;
+  o.gust_ned_mps = e.gust_ned_mps;
+  o.gust_rates_b_rps = e.gust_rates_b_rps;
+  o.air_velocity_b_mps = e.air_velocity_b_mps;
+
+  const Surfaces& s = *surfaces_;
+  o.elevator_rad = position_of(s.elevator);
+  o.aileron_rad = position_of(s.aileron);
+  o.rudder_rad = position_of(s.rudder);
+  o.flap_norm = position_of(s.flaps) / s.flap_position_at_full;
+  o.flap_rad = o.flap_norm * s.flap_full_travel_rad;
+  o.speedbrake_norm = position_of(s.speedbrake);
+  o.spoiler_norm = position_of(s.spoilers);
+  o.gear_norm = s.retractable_gear ? position_of(s.gear) : 1.0;
+
+  o.aero = e.aero;
+  o.aero_force_b_n = e.aero_force_b;
+  o.aero_moment_b_nm = e.aero_moment_cg;
+  o.propulsion_force_b_n = e.prop_force_b;
+  o.propulsion_moment_b_nm = e.prop_moment_cg;
+  o.gear_force_b_n = e.gear_force_b;
+  o.gear_moment_b_nm = e.gear_moment_cg;
+  o.total_force_b_n = e.wrench.force_b_n;
+  o.total_moment_b_nm = e.wrench.moment_b_nm;
+  o.stalled = aerodynamics_.stall_hysteresis_active();
+
+  o.mass_kg = mass.mass_kg;
+  o.fuel_kg = mass.fuel_kg;
+  o.cg_m = mass.cg_m;
+  o.inertia_kgm2 = mass.inertia_kgm2;
+  std::copy(mass.tank_contents_kg.begin(), mass.tank_contents_kg.end(), o.tank_fuel_kg.begin());
+
+  fill_engine_outputs();
+  fill_contact_outputs();
+}
+
+void AircraftModel::fill_engine_outputs() {
+  AircraftOutputs& o = outputs_;
+  o.total_thrust_n = 0.0;
+  const auto& starved = mass_->outputs().engine_starved;
+  for (std::size_t i = 0; i < engines_.size(); ++i) {
+    const Engine& engine = engines_[i];
+    EngineOutputs& out = o.engines[i];
+    out.failed = engine.failed;
+    out.starved = i < starved.size() && starved[i];
+    out.running = engine_burning(i) && !engine.failed;
+    out.throttle = controls_.throttle[i];
+    if (engine.piston) {
+      const PistonPowerplant::Outputs& p = engine.piston->outputs();
+      out.thrust_n = p.thrust_n;
+      out.rpm = p.engine_rpm;
+      out.propeller_rpm = p.propeller_rpm;
+      out.manifold_pressure_pa = p.manifold_pressure_pa;
+      out.power_w = p.brake_power_w;
+      out.fuel_flow_kgps = p.fuel_flow_kgps;
+    } else {
+      const Turbofan::Outputs& t = engine.turbofan->outputs();
+      out.thrust_n = t.thrust_n;
+      out.n1_pct = t.n1_pct;
+      out.n2_pct = t.n2_pct;
+      out.fuel_flow_kgps = t.fuel_flow_kgps;
+    }
+    o.total_thrust_n += out.thrust_n;
+  }
+}
+
+void AircraftModel::fill_contact_outputs() {
+  // The gear's last evaluation is the present state's: evaluate_current() always runs last.
+  AircraftOutputs& o = outputs_;
+  const LandingGear::Outputs& gear = gear_->outputs();
+  o.weight_on_wheels = gear.weight_on_wheels;
+  o.any_contact = false;
+  o.gear_normal_force_n = 0.0;
+  for (std::size_t i = 0; i < o.contacts.size(); ++i) {
+    const LandingGear::ContactOutput& c = gear.contacts[i];
+    ContactOutputs& out = o.contacts[i];
+    out.weight_on_wheels = c.in_contact && c.normal_force_n > 0.0;
+    out.compression_m = c.compression_m;
+    out.compression_rate_mps = c.compression_rate_mps;
+    out.normal_force_n = c.normal_force_n;
+    out.force_b_n = c.force_b_n;
+    o.any_contact = o.any_contact || out.weight_on_wheels;
+    o.gear_normal_force_n += c.normal_force_n;
+  }
+}
+
+}  // namespace fedsim::flight
