@@ -245,15 +245,7 @@ int record_lockstep(const RecordOptions& options, Recording& recording,
   return rc;
 }
 
-}  // namespace
-
-std::string csv_file_name(const std::string& topic) {
-  std::string name = topic;
-  std::replace(name.begin(), name.end(), '/', '_');
-  return name + ".csv";
-}
-
-int run_record(const RecordOptions& options, std::ostream& out, std::ostream& err) {
+int record(const RecordOptions& options, std::ostream& out, std::ostream& err) {
   try {
     if (options.topics.empty()) {
       err << "fedsim record: no topics given (--topics t1,t2)\n";
@@ -310,6 +302,33 @@ int run_record(const RecordOptions& options, std::ostream& out, std::ostream& er
     const int rc = record_lockstep(options, recording, federate);
     recording.print_summary();
     return rc;
+  } catch (const std::exception& e) {
+    err << "fedsim record: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace
+
+std::string csv_file_name(const std::string& topic) {
+  std::string name = topic;
+  std::replace(name.begin(), name.end(), '/', '_');
+  return name + ".csv";
+}
+
+int run_record(const RecordOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    RecordOptions opts = options;
+    opts.topics.clear();
+    for (auto topic : options.topics) {  // trimmed, each once
+      topic.erase(0, topic.find_first_not_of(" \t"));
+      topic.erase(topic.find_last_not_of(" \t") + 1);
+      if (!topic.empty() &&
+          std::find(opts.topics.begin(), opts.topics.end(), topic) == opts.topics.end()) {
+        opts.topics.push_back(topic);
+      }
+    }
+    return record(opts, out, err);
   } catch (const std::exception& e) {
     err << "fedsim record: " << e.what() << "\n";
     return 1;

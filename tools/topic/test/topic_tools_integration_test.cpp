@@ -1,5 +1,6 @@
 // Integration tests over loopback (profile fedsim_loopback, one domain per test in 160-169): an
 // in-process runtime::Publisher<T> writes, the tools discover, print and record it.
+#include "tools/topic/raw_type.hpp"
 #include "tools/topic/topic_commands.hpp"
 #include "tools/topic/topic_tools.hpp"
 
@@ -8,6 +9,7 @@
 #include "common/runtime/subscription.hpp"
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
 
 #include <gtest/gtest.h>
 
@@ -162,6 +164,59 @@ TEST(TopicList, RunsThroughTheCli) {
   EXPECT_NE(text.find("fedsim/frame_tick  [fedsim::msg::FrameTick]  1 writer, 0 readers"),
             std::string::npos)
       << text;
+}
+
+TEST(TopicList, WorksForTypesOutsideFedsim) {
+  // A writer of a type this build has no TypeObject for (raw CDR bytes under a foreign name).
+  auto dds = runtime::DdsParticipant::create(loopback(168, "foreign_publisher"));
+  auto* topic = dds->topic_for("vendor/opaque", eprosima::fastdds::dds::TypeSupport(
+                                                    new RawPubSubType("vendor::Opaque", false, 64)));
+  auto* writer = dds->publisher()->create_datawriter_with_profile(topic, "state");
+  ASSERT_NE(writer, nullptr);
+  std::atomic<bool> running{true};
+  std::thread publisher([&] {
+    RawSample sample{{0x00, 0x01, 0x00, 0x00, 1, 2, 3, 4}};  // CDR_LE encapsulation + 4 bytes
+    while (running.load()) {
+      writer->write(&sample);
+      std::this_thread::sleep_for(10ms);
+    }
+  });
+
+  ListOptions list;
+  list.dds = loopback(168, "fedsim");
+  list.wait_s = 1.0;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_topic_list(list, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("vendor/opaque  [vendor::Opaque]  1 writer, 0 readers"),
+            std::string::npos)
+      << out.str();
+
+  HzOptions hz;
+  hz.dds = loopback(168, "fedsim");
+  hz.topic = "vendor/opaque";
+  hz.duration_s = 1.0;
+  std::ostringstream hz_out;
+  EXPECT_EQ(run_topic_hz(hz, hz_out, err), 0) << err.str();
+  EXPECT_NE(hz_out.str().find("average rate: "), std::string::npos) << hz_out.str();
+
+  // echo needs the type: a clear error, and exit code 1 through the CLI.
+  CLI::App app{"fedsim"};
+  add_topic_commands(app);
+  testing::internal::CaptureStderr();
+  int code = 0;
+  try {
+    app.parse(std::vector<std::string>{"vendor/opaque", "--domain=168", "echo", "topic"});
+  } catch (const CLI::RuntimeError& e) {
+    code = e.get_exit_code();
+  }
+  const std::string echo_err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(echo_err.find("type 'vendor::Opaque' of topic 'vendor/opaque' is unknown"),
+            std::string::npos)
+      << echo_err;
+  running.store(false);
+  publisher.join();
+  dds->publisher()->delete_datawriter(writer);
 }
 
 TEST(TopicEcho, PrintsTheLatestTransientLocalCommand) {

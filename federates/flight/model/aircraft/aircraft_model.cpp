@@ -163,7 +163,6 @@ AircraftModel::AircraftModel(AircraftPack pack, Options options)
   build_systems();
   AircraftInitialConditions parked;
   parked.position.alt_m = 1000.0;
-  parked.engines_running = false;
   parked.settle_engines = false;
   reset(parked);
 }
@@ -253,6 +252,12 @@ void AircraftModel::reset(const AircraftInitialConditions& initial) {
   if (initial.settle_engines) settle_systems();
 }
 
+void AircraftModel::reset(const AircraftInitialConditions& initial,
+                          const AircraftControls& controls) {
+  set_controls(controls);
+  reset(initial);
+}
+
 void AircraftModel::step(double frame_dt_s) {
   if (!(frame_dt_s > 0.0) || !std::isfinite(frame_dt_s)) return;
   const double h = frame_dt_s / static_cast<double>(options_.substeps);
@@ -310,6 +315,16 @@ void AircraftModel::restart_turbulence() {
 
 void AircraftModel::set_engine_failed(std::size_t engine, bool failed) {
   if (engine < engines_.size()) engines_[engine].failed = failed;
+}
+
+std::size_t AircraftModel::engine_count() const { return engines_.size(); }
+
+void AircraftModel::set_engine_running(std::size_t engine, bool running) {
+  if (engine < engines_.size()) engines_[engine].running = running;
+}
+
+bool AircraftModel::engine_running(std::size_t engine) const {
+  return engine < engines_.size() && engines_[engine].running;
 }
 
 bool AircraftModel::engine_failed(std::size_t engine) const {

@@ -82,8 +82,8 @@ class AircraftModel {
   };
 
   /// Builds every sub-model from the pack (throws std::invalid_argument if the pack has more
-  /// than kMaxEngines engines or the options are bad). The aircraft starts at rest at 0 N 0 E,
-  /// 1000 m, until reset() is called.
+  /// than kMaxEngines engines or the options are bad). Until reset() the aircraft hangs at
+  /// rest at 0 N 0 E, 1000 m, engines running at idle.
   AircraftModel(AircraftPack pack, Options options);
   ~AircraftModel();
   AircraftModel(const AircraftModel&) = delete;
@@ -95,6 +95,9 @@ class AircraftModel {
   /// commanded positions, engines running or not (and settled if asked), the flat-earth origin
   /// pinned under the IC position, the integrator history cleared.
   void reset(const AircraftInitialConditions& initial);
+  /// As reset(initial) with these controls set first, so that the actuators start where they
+  /// point and the engines settle at these throttles (the usual way to start a run).
+  void reset(const AircraftInitialConditions& initial, const AircraftControls& controls);
   /// Advances one frame of frame_dt_s (> 0) seconds in Options::substeps integration steps.
   void step(double frame_dt_s);
 
@@ -132,6 +135,11 @@ class AircraftModel {
   /// power; a turbofan spools down, a piston engine windmills. Out-of-range indices are ignored.
   void set_engine_failed(std::size_t engine, bool failed);
   bool engine_failed(std::size_t engine) const;
+  /// Ignition and fuel on (true) or cut off (engine 0-based; out-of-range ignored). A piston
+  /// engine whose shaft still turns relights; one that has stopped needs the shaft turned
+  /// (settle_systems or a reset with running engines).
+  void set_engine_running(std::size_t engine, bool running);
+  bool engine_running(std::size_t engine) const;
   /// Moves the terrain plane (m above MSL).
   void set_runway_elevation_m(double elevation_m);
   double runway_elevation_m() const { return runway_elevation_m_; }
@@ -144,7 +152,7 @@ class AircraftModel {
   double time_s() const { return time_s_; }
   const AircraftPack& pack() const { return pack_; }
   const Options& options() const { return options_; }
-  std::size_t engine_count() const { return engines_.size(); }
+  std::size_t engine_count() const;
   /// The rigid-body state (reference frame of the earth model: flat NED or ECEF).
   RigidBodyState body_state() const { return RigidBodyDynamics::unpack(x_); }
   /// The scenario origin (flat-earth NED origin; reference for north_m / east_m and the

@@ -1,0 +1,186 @@
+#include "flight/federate/flight_adapter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace fedsim::flight {
+
+namespace {
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kGradientDepthM = 600.0;  // wind grows with height up to this, then constant
+
+template <class Array>
+void copy3(const Eigen::Vector3d& v, Array& out) {
+  out[0] = v.x();
+  out[1] = v.y();
+  out[2] = v.z();
+}
+
+std::string describe(const TrimResult& trim) {
+  std::ostringstream out;
+  out << (trim.converged ? "trimmed" : "trim FAILED: " + trim.reason) << " alt_m=" << trim.altitude_m
+      << " tas_mps=" << trim.tas_mps << " alpha_deg=" << trim.alpha_rad / kDeg;
+  return out.str();
+}
+
+AircraftModel::Runway runway_of(const RunwayEnd& end) {
+  AircraftModel::Runway r;
+  r.threshold.lat_rad = end.threshold_lat_rad;
+  r.threshold.lon_rad = end.threshold_lon_rad;
+  r.threshold.alt_m = end.elevation_m;
+  r.heading_rad = end.heading_rad;
+  return r;
+}
+}  // namespace
+
+AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,
+                                       const AircraftControls& trimmed) {
+  AircraftControls c = trimmed;
+  const bool relative = mode == ControlsMode::kRelative;
+  auto primary = [&](double pilot, double trim) { return relative ? trim + pilot : pilot; };
+  c.elevator = primary(in.elevator(), trimmed.elevator);
+  c.aileron = primary(in.aileron(), trimmed.aileron);
+  c.rudder = primary(in.rudder(), trimmed.rudder);
+  for (std::size_t e = 0; e < AircraftControls::kMaxEngines; ++e) {
+    c.throttle[e] = primary(in.throttle()[e], trimmed.throttle[e]);
+    if (!relative) {
+      c.mixture[e] = in.mixture()[e];
+      c.propeller[e] = in.propeller()[e];
+    }
+  }
+  if (!relative) {
+    c.elevator_trim = in.elevator_trim();
+    c.aileron_trim = in.aileron_trim();
+    c.rudder_trim = in.rudder_trim();
+  }
+  c.flaps = relative ? std::max<double>(in.flaps(), trimmed.flaps) : in.flaps();
+  c.speedbrake = in.speedbrake();
+  c.gear_down = relative ? (in.gear_down() || trimmed.gear_down) : in.gear_down();
+  c.brake_left = in.brake_left();
+  c.brake_right = in.brake_right();
+  c.steering = in.nosewheel_steering();
+  return c.clamped();
+}
+
+void fill_aircraft_state(const AircraftOutputs& out, msg::AircraftState& s) {
+  s.latitude_rad(out.geodetic.lat_rad);
+  s.longitude_rad(out.geodetic.lon_rad);
+  s.altitude_msl_m(out.geodetic.alt_m);
+  s.height_agl_m(out.height_agl_m);
+  copy3(out.position_ecef_m, s.position_ecef_m());
+  copy3(out.velocity_ned_mps, s.velocity_ned_mps());
+  copy3(out.velocity_b_mps, s.velocity_body_mps());
+  for (int i = 0; i < 4; ++i) s.q_ned_to_body()[static_cast<std::size_t>(i)] = out.q_ned_to_body[i];
+  s.phi_rad(out.euler.phi_rad);
+  s.theta_rad(out.euler.theta_rad);
+  s.psi_rad(out.euler.psi_rad);
+  copy3(out.omega_b_rps, s.omega_body_rps());
+  copy3(out.omega_dot_b_rps2, s.omega_dot_body_rps2());
+  copy3(out.acceleration_b_mps2, s.accel_body_mps2());
+  copy3(out.specific_force_eye_b_mps2, s.specific_force_eye_mps2());
+  auto& air = s.air();
+  air.tas_mps(out.tas_mps);
+  air.cas_mps(out.cas_mps);
+  air.eas_mps(out.eas_mps);
+  air.mach(out.mach);
+  air.alpha_rad(out.alpha_rad);
+  air.beta_rad(out.beta_rad);
+  air.qbar_pa(out.qbar_pa);
+  air.static_pressure_pa(out.static_pressure_pa);
+  air.temperature_k(out.temperature_k);
+  air.density_kgpm3(out.density_kgpm3);
+  copy3(out.wind_ned_mps, air.wind_ned_mps());
+  s.elevator_rad(out.elevator_rad);
+  s.aileron_rad(out.aileron_rad);
+  s.rudder_rad(out.rudder_rad);
+  s.flap_rad(out.flap_rad);
+  s.gear_position(out.gear_norm);
+  s.mass_kg(out.mass_kg);
+  s.fuel_kg(out.fuel_kg);
+  s.total_thrust_n(out.total_thrust_n);
+  s.engine_count(static_cast<uint16_t>(out.engines.size()));
+  s.on_ground(out.any_contact);
+  const std::size_t n = std::min<std::size_t>(out.contacts.size(), s.gear().size());
+  s.gear_count(static_cast<uint16_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& g = s.gear()[i];
+    g.weight_on_wheels(out.contacts[i].weight_on_wheels);
+    g.compression_m(static_cast<float>(out.contacts[i].compression_m));
+    g.normal_force_n(static_cast<float>(out.contacts[i].normal_force_n));
+  }
+}
+
+void fill_engine_state(const EngineOutputs& e, std::size_t index, msg::EngineState& s) {
+  s.engine_index(static_cast<uint16_t>(index));
+  s.running(e.running);
+  s.failed(e.failed);
+  s.thrust_n(e.thrust_n);
+  s.rpm(e.rpm);
+  s.n1_pct(e.n1_pct);
+  s.n2_pct(e.n2_pct);
+  s.manifold_pressure_pa(e.manifold_pressure_pa);
+  s.power_w(e.power_w);
+  s.fuel_flow_kgps(e.fuel_flow_kgps);
+  s.exhaust_temperature_k(e.egt_k);
+}
+
+WeatherSettings weather_from_command(const msg::WeatherSettings& in, double surface_elevation_m) {
+  WeatherSettings w;
+  w.atmosphere.sea_level_temperature_offset_k = in.sea_level_temperature_offset_k();
+  if (in.sea_level_pressure_pa() > 0.0) w.atmosphere.sea_level_pressure_pa = in.sea_level_pressure_pa();
+  if (in.wind_speed_mps() > 0.0) {
+    const double top_speed = in.wind_speed_mps() + in.wind_gradient_mps_per_m() * kGradientDepthM;
+    w.wind.altitude_m = {surface_elevation_m, surface_elevation_m + kGradientDepthM};
+    w.wind.speed_mps = {in.wind_speed_mps(), std::max(0.0, top_speed)};
+    w.wind.from_direction_rad = {in.wind_from_rad(), in.wind_from_rad()};
+  }
+  const int intensity = static_cast<int>(std::lround(std::clamp(in.turbulence_intensity(), 0.0, 3.0)));
+  w.turbulence = static_cast<Turbulence::Severity>(intensity);
+  if (in.turbulence_seed() != 0) w.turbulence_seed = in.turbulence_seed();
+  w.validate();
+  return w;
+}
+
+std::string apply_command(const msg::SimCommand& command, AircraftModel& model,
+                          const RunwayTable& runways) {
+  switch (command.kind()) {
+    case msg::COMMAND_REPOSITION: {
+      const auto& r = command.reposition();
+      if (r.kind() == msg::REPOSITION_POINT) {
+        GeodeticPosition p{r.latitude_rad(), r.longitude_rad(), r.altitude_msl_m()};
+        const double tas = r.airspeed_mps() > 0 ? r.airspeed_mps() : model.outputs().tas_mps;
+        return "reposition to point: " + describe(model.reposition_to_point(p, r.heading_rad(), tas));
+      }
+      const RunwayEnd end = runways.at(r.airport().to_string(), r.runway().to_string());
+      if (r.kind() == msg::REPOSITION_RUNWAY_THRESHOLD) {
+        return "reposition to " + end.airport + " " + end.runway + " threshold: " +
+               describe(model.reposition_to_runway(runway_of(end)));
+      }
+      const double distance = r.gate_distance_m() > 0 ? r.gate_distance_m() : 9260.0;  // 5 NM
+      const double tas = r.airspeed_mps() > 0 ? r.airspeed_mps() : model.outputs().tas_mps;
+      return "reposition to " + end.airport + " " + end.runway + " approach gate: " +
+             describe(model.reposition_to_approach_gate(runway_of(end), distance, tas));
+    }
+    case msg::COMMAND_WEATHER:
+      model.set_weather(weather_from_command(command.weather(), model.runway_elevation_m()));
+      return "weather set";
+    case msg::COMMAND_FAILURE: {
+      const std::string target = command.target().to_string();
+      if (target.rfind("engine", 0) != 0 || target.size() != 7 || target[6] < '1' || target[6] > '4') {
+        throw std::invalid_argument("unknown failure target '" + target + "' (engine1..engine4)");
+      }
+      const std::size_t engine = static_cast<std::size_t>(target[6] - '1');
+      if (engine >= model.engine_count()) {
+        throw std::invalid_argument(target + ": the aircraft has " +
+                                    std::to_string(model.engine_count()) + " engine(s)");
+      }
+      model.set_engine_failed(engine, command.failure().active());
+      return target + (command.failure().active() ? " failed" : " restored");
+    }
+    default:
+      return "";
+  }
+}
+
+}  // namespace fedsim::flight

@@ -1,0 +1,118 @@
+#include "flight/federate/start_options.hpp"
+
+#include "flight/model/environment/runway_table.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace fedsim::flight {
+
+namespace {
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kFt = 0.3048;
+constexpr double kKt = 1852.0 / 3600.0;
+}  // namespace
+
+void add_start_options(CLI::App& app, StartOptions& o) {
+  auto* ic = app.add_option("--ic", o.ic_file, "initial-condition file (YAML)");
+  auto* trim = app.add_option("--trim", o.trim_kind, "trim: level | climb | turn | ground")
+                   ->check(CLI::IsMember({"level", "climb", "turn", "ground"}));
+  ic->excludes(trim);
+  app.add_option("--alt-ft", o.alt_ft, "trim altitude above MSL [ft]")->capture_default_str();
+  app.add_option("--ktas", o.ktas, "trim true airspeed [kt]");
+  app.add_option("--kcas", o.kcas, "trim calibrated airspeed [kt]");
+  app.add_option("--heading", o.heading_deg, "true heading [deg]")->capture_default_str();
+  app.add_option("--lat", o.lat_deg, "latitude [deg]")->check(CLI::Range(-90.0, 90.0))->capture_default_str();
+  app.add_option("--lon", o.lon_deg, "longitude [deg]")->check(CLI::Range(-180.0, 180.0))->capture_default_str();
+  app.add_option("--gamma-deg", o.gamma_deg, "climb: flight-path angle [deg], + climbing");
+  app.add_option("--bank-deg", o.bank_deg, "turn: bank angle [deg], + right");
+  app.add_option("--flaps", o.flaps, "flap setting held in the trim, 0..1")->check(CLI::Range(0.0, 1.0));
+  app.add_option("--runway-elevation-m", o.runway_elevation_m, "terrain plane above MSL [m]");
+  app.add_option("--airport", o.airport, "ground start: airport (ICAO), with --runway");
+  app.add_option("--runway", o.runway, "ground start: runway end, e.g. 28R");
+}
+
+StartState establish_start(const StartOptions& o, AircraftModel& model) {
+  StartState start;
+  if (!o.ic_file.empty()) {
+    const auto file = load_initial_condition_file(o.ic_file);
+    if (file.runway_elevation_m) model.set_runway_elevation_m(*file.runway_elevation_m);
+    if (o.runway_elevation_m) model.set_runway_elevation_m(*o.runway_elevation_m);
+    model.set_weather(file.weather);
+    model.reset(file.initial);
+    model.set_controls(file.controls);
+    start.initial = file.initial;
+    start.controls = file.controls;
+    return start;
+  }
+  if (!o.airport.empty() || !o.runway.empty()) {
+    const RunwayEnd end = RunwayTable::load_default().at(o.airport, o.runway);
+    AircraftModel::Runway runway;
+    runway.threshold = {end.threshold_lat_rad, end.threshold_lon_rad, end.elevation_m};
+    runway.heading_rad = end.heading_rad;
+    const TrimResult trim = model.reposition_to_runway(runway);
+    start.trim = trim;
+    start.initial = trim.initial_conditions;
+    start.controls = trim.controls;
+    return start;
+  }
+  if (o.trim_kind.empty()) {
+    throw std::invalid_argument("say how to start: --ic FILE, --trim KIND or --airport/--runway");
+  }
+  if (o.runway_elevation_m) model.set_runway_elevation_m(*o.runway_elevation_m);
+  TrimRequest request;
+  request.kind = trim_kind_from_name(o.trim_kind);
+  request.position = {o.lat_deg * kDeg, o.lon_deg * kDeg, o.alt_ft * kFt};
+  request.heading_rad = o.heading_deg * kDeg;
+  if (request.kind != TrimKind::kGround) {
+    if ((o.ktas > 0) == (o.kcas > 0)) {
+      throw std::invalid_argument("a flight trim needs exactly one of --ktas or --kcas");
+    }
+    request.airspeed_is_cas = o.kcas > 0;
+    request.airspeed_mps = (o.kcas > 0 ? o.kcas : o.ktas) * kKt;
+  }
+  request.flight_path_rad = o.gamma_deg * kDeg;
+  request.bank_rad = o.bank_deg * kDeg;
+  request.controls.flaps = o.flaps;
+  request.controls.gear_down = request.kind == TrimKind::kGround;
+  const TrimResult trim = Trim(model).solve(request);
+  start.trim = trim;
+  start.initial = trim.initial_conditions;
+  start.controls = trim.controls;
+  return start;
+}
+
+std::string trim_json(const TrimResult& t) {
+  nlohmann::json j;
+  j["converged"] = t.converged;
+  if (!t.converged) j["reason"] = t.reason;
+  j["kind"] = std::string(to_string(t.kind));
+  j["iterations"] = t.iterations;
+  j["alpha_deg"] = t.alpha_rad / kDeg;
+  j["beta_deg"] = t.beta_rad / kDeg;
+  j["phi_deg"] = t.phi_rad / kDeg;
+  j["theta_deg"] = t.theta_rad / kDeg;
+  j["psi_deg"] = t.psi_rad / kDeg;
+  j["flight_path_deg"] = t.flight_path_rad / kDeg;
+  j["turn_rate_dps"] = t.turn_rate_radps / kDeg;
+  j["tas_kt"] = t.tas_mps / kKt;
+  j["cas_kt"] = t.cas_mps / kKt;
+  j["altitude_ft"] = t.altitude_m / kFt;
+  j["elevator"] = t.controls.elevator;
+  j["aileron"] = t.controls.aileron;
+  j["rudder"] = t.controls.rudder;
+  j["throttle"] = t.controls.throttle[0];
+  j["elevator_deg"] = t.elevator_rad / kDeg;
+  j["aileron_deg"] = t.aileron_rad / kDeg;
+  j["rudder_deg"] = t.rudder_rad / kDeg;
+  j["thrust_n"] = t.total_thrust_n;
+  nlohmann::json residuals;
+  for (int axis = 0; axis < kTrimAxisCount; ++axis) {
+    if (t.constrained[static_cast<std::size_t>(axis)]) {
+      residuals[std::string(trim_axis_name(axis))] = t.residuals[static_cast<std::size_t>(axis)];
+    }
+  }
+  j["residuals"] = residuals;
+  return j.dump();
+}
+
+}  // namespace fedsim::flight
