@@ -1,13 +1,28 @@
 #include "common/runtime/dds_participant.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/log/Log.hpp>
 
 #include <filesystem>
+#include <regex>
 #include <set>
 
 namespace fedsim::runtime {
 
+namespace {
+// Fast DDS 2.9 builds a DynamicType from every complete TypeObject a remote endpoint announces
+// and, for the keyed types fastddsgen 2.3 generates, logs "DYN_TYPES Error ... MemberId not
+// found" while applying the @key annotation. Nothing fails (keys travel in the key hash and
+// fedsim's own dynamic readers build their types locally), so that one category is silenced in
+// every fedsim process; every other Fast DDS error still shows.
+void silence_spurious_dynamic_type_errors() {
+  static std::once_flag once;
+  std::call_once(once, [] { fdds::Log::SetCategoryFilter(std::regex("^(?!DYN_TYPES$)")); });
+}
+}  // namespace
+
 void load_qos_profiles(const std::string& qos_file) {
+  silence_spurious_dynamic_type_errors();
   static std::mutex mutex;
   static std::set<std::string> loaded;
   std::lock_guard lock(mutex);

@@ -1,6 +1,8 @@
-// NASA TM-2015-218675 atmospheric check cases 1, 2, 3, 6, 7, 9, 10 flown on fedsim's rigid-body
-// library (rotating WGS-84 earth, J2 gravity, US 1976 air) and compared with the envelope of
-// NASA's simulation tools; also tests of the reference loader and the comparator themselves.
+// NASA TM-2015-218675 atmospheric check cases 1, 2, 3, 6, 7, 9, 10 flown through the batch
+// program fedsim-fly (aircraft packs data/aircraft/nasa_*.yaml, IC files tests/data/nasa/<case>/
+// ic.yaml, rotating WGS-84 earth, J2 gravity, US 1976 air) and, underneath it, on the rigid-body
+// library alone; both compared with the envelope of NASA's simulation tools. Also tests of the
+// reference loader and the comparator themselves.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include "check_case.hpp"
 #include "comparison_plot.hpp"
 #include "envelope_comparator.hpp"
+#include "fly_check_case.hpp"
 #include "nasa_reference.hpp"
 
 namespace fedsim::flight::nasa {
@@ -59,33 +62,57 @@ void print_table(const std::string& id, const std::vector<ChannelComparison>& re
 }
 
 class NasaCheckCases : public ::testing::TestWithParam<CheckCase> {};
+class NasaCheckCasesThroughFedsimFly : public ::testing::TestWithParam<FlyCheckCase> {};
+
+void expect_inside_envelope(const std::string& id, const TimeHistory& fedsim,
+                            const NasaReference& reference) {
+  const std::vector<ChannelComparison> results =
+      EnvelopeComparator(reference).compare_all(fedsim, kMargins);
+  print_table(id, results);
+  EXPECT_EQ(results.size(), 12u);  // every channel is recorded by at least one NASA tool
+  for (const ChannelComparison& r : results) {
+    EXPECT_TRUE(r.passed()) << id << " " << r.channel << ": " << r.max_excess
+                            << " outside NASA's envelope at t = " << r.time_of_max_excess
+                            << " s (margin " << r.margin << ")";
+  }
+}
 
 }  // namespace
 
 // Names the case in GoogleTest's messages instead of dumping its bytes.
 void PrintTo(const CheckCase& check_case, std::ostream* os) { *os << check_case.id; }
+void PrintTo(const FlyCheckCase& check_case, std::ostream* os) { *os << check_case.id; }
 
 namespace {
 
+TEST_P(NasaCheckCasesThroughFedsimFly, StaysWithinTheNasaEnvelope) {
+  // The whole product path: pack + IC file -> fedsim-fly (AircraftModel: atmosphere, weather,
+  // air data, aerodynamics, equations of motion) -> CSV -> comparison. The plots
+  // build/nasa/<case>.png are drawn from these runs.
+  const FlyCheckCase& check_case = GetParam();
+  const NasaReference reference = load_reference(check_case.id);
+  const std::string work_dir = ::testing::TempDir() + "nasa_fly";
+  std::filesystem::create_directories(work_dir);
+  const TimeHistory fedsim = fly_case(check_case, work_dir);
+  expect_inside_envelope(check_case.id, fedsim, reference);
+  if (!plot_comparison(check_case.id, check_case.title, fedsim, reference,
+                       FEDSIM_NASA_PLOT_DIR)) {
+    std::printf("%s: gnuplot unavailable or failed; no PNG drawn\n", check_case.id.c_str());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Atmospheric, NasaCheckCasesThroughFedsimFly,
+                         ::testing::ValuesIn(fly_check_cases()),
+                         [](const auto& info) { return info.param.id; });
+
 TEST_P(NasaCheckCases, StaysWithinTheNasaEnvelope) {
+  // The rigid-body library alone, with hand-written force sources (check_case.cpp).
   const CheckCase& check_case = GetParam();
   const NasaReference reference = load_reference(check_case.id);
   // RK4 at 100 Hz, recorded at 10 Hz; the answers are converged in the step (h = 0.002 s
   // changes nothing at the printed precision).
   const TimeHistory fedsim = simulate(check_case, IntegrationMethod::kRk4, 0.01, 0.1);
-  const std::vector<ChannelComparison> results =
-      EnvelopeComparator(reference).compare_all(fedsim, kMargins);
-  print_table(check_case.id, results);
-  EXPECT_EQ(results.size(), 12u);  // every channel is recorded by at least one NASA tool
-  for (const ChannelComparison& r : results) {
-    EXPECT_TRUE(r.passed()) << check_case.id << " " << r.channel << ": " << r.max_excess
-                            << " outside NASA's envelope at t = " << r.time_of_max_excess
-                            << " s (margin " << r.margin << ")";
-  }
-  if (!plot_comparison(check_case.id, check_case.title, fedsim, reference,
-                       FEDSIM_NASA_PLOT_DIR)) {
-    std::printf("%s: gnuplot unavailable or failed; no PNG drawn\n", check_case.id.c_str());
-  }
+  expect_inside_envelope(check_case.id, fedsim, reference);
 }
 
 INSTANTIATE_TEST_SUITE_P(Atmospheric, NasaCheckCases,

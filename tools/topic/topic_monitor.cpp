@@ -67,14 +67,8 @@ std::string EndpointInfo::durability_name() const {
 }
 
 std::unique_ptr<TopicMonitor> TopicMonitor::create(const runtime::ParticipantOptions& options) {
-  // With a participant listener installed, Fast DDS 2.9 builds a DynamicType from every complete
-  // TypeObject a remote endpoint announces (PDP::check_and_notify_type_discovery, for
-  // on_type_discovery) and logs "DYN_TYPES Error ... MemberId not found" for each keyed fedsim
-  // type received from another process. The tools never use those; silence that category in the
-  // tool's process (their own dynamic-type failures are reported through return values).
-  static std::once_flag quiet_dyn_types;
-  std::call_once(quiet_dyn_types,
-                 [] { fdds::Log::SetCategoryFilter(std::regex("^(?!DYN_TYPES$)")); });
+  // (The spurious "DYN_TYPES ... MemberId not found" log of remote keyed TypeObjects is silenced
+  // for every fedsim process in runtime::load_qos_profiles.)
   std::unique_ptr<TopicMonitor> monitor(new TopicMonitor());
   {
     DisabledCreation disabled;

@@ -31,6 +31,11 @@ void add_fly_options(CLI::App& app, FlyOptions& o) {
       ->capture_default_str();
   app.add_option("--seed", o.seed, "turbulence seed (unless the IC file's weather names one)")
       ->capture_default_str();
+  app.add_option("--aero-rates", o.aero_rates,
+                 "body rates the aerodynamic rate terms see: air (relative to the air mass) | "
+                 "inertial (as NASA's check cases define their damping)")
+      ->check(CLI::IsMember({"air", "inertial"}))
+      ->capture_default_str();
   app.add_option("--turbulence", o.turbulence, "none | light | moderate | severe (MIL-F-8785C)")
       ->check(CLI::IsMember({"none", "light", "moderate", "severe"}));
   app.add_option("--out", o.out, "output CSV file")->required();
@@ -46,6 +51,8 @@ AircraftModel::Options model_options(const FlyOptions& o) {
   m.integrator = integration_method_from_name(o.integrator);
   m.substeps = o.substeps;
   m.turbulence_seed = o.seed;
+  m.aero_rates = o.aero_rates == "inertial" ? AircraftModel::AeroRates::kInertial
+                                            : AircraftModel::AeroRates::kAirMass;
   if (o.start.runway_elevation_m) m.runway_elevation_m = *o.start.runway_elevation_m;
   return m;
 }
@@ -54,7 +61,7 @@ std::string resolve_pack_path(const std::string& aircraft) {
   namespace fs = std::filesystem;
   if (fs::is_regular_file(aircraft)) return aircraft;
   const fs::path folder = fs::path(FEDSIM_DATA_DIR) / "aircraft";
-  for (const fs::path candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
+  for (const fs::path& candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
     if (fs::is_regular_file(candidate)) return candidate.string();
   }
   throw std::invalid_argument("unknown aircraft pack '" + aircraft + "': no such file, and no " +

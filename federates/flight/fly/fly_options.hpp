@@ -22,6 +22,7 @@ struct FlyOptions {
   std::string earth = "flat";    // --earth
   std::string integrator = "rk4";  // --integrator
   std::uint64_t seed = 1;        // --seed (turbulence)
+  std::string aero_rates = "air";  // --aero-rates air|inertial
   std::string turbulence;        // --turbulence none|light|moderate|severe (overrides the IC)
   std::string out;               // --out file.csv
   int output_every = 1;          // --output-every N frames

@@ -571,6 +571,8 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
 
   // 6. Aerodynamics about the aero reference point, moved to the CG. Rates relative to the air
   // mass: the earth-relative body rates minus the turbulence gust rates (Etkin).
+  const Eigen::Vector3d& omega_for_aero =
+      options_.aero_rates == AeroRates::kInertial ? state.omega_b_rps : e.omega_wrt_earth_b;
   const Eigen::Vector3d arp_from_cg = pack_.geometry.aero_reference_point_m - cg;
   Aerodynamics::Inputs aero_in;
   aero_in.alpha_rad = e.alpha_rad;
@@ -578,7 +580,7 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   aero_in.tas_mps = e.tas_mps;
   aero_in.mach = e.mach;
   aero_in.qbar_pa = e.qbar_pa;
-  aero_in.omega_air_b = e.omega_wrt_earth_b - e.gust_rates_b_rps;
+  aero_in.omega_air_b = omega_for_aero - e.gust_rates_b_rps;
   aero_in.alphadot_radps = alpha_dot_radps_;
   aero_in.betadot_radps = beta_dot_radps_;
   aero_in.elevator_rad = position_of(s.elevator);

@@ -54,6 +54,13 @@ class AircraftModel {
  public:
   static constexpr std::size_t kMaxEngines = AircraftControls::kMaxEngines;
 
+  /// Which body rates the aerodynamic rate terms (p_hat, q_hat, r_hat) see.
+  enum class AeroRates {
+    kAirMass,  ///< relative to the air mass, which turns with the earth (minus gust rates)
+    kInertial, ///< relative to inertial space (NASA TM-2015-218675 check cases define their
+               ///< damping so; 7.3e-5 rad/s from kAirMass on the rotating earth)
+  };
+
   struct Options {
     /// Flat: NED at the scenario origin (the reset/reposition point at h = 0) is inertial and
     /// gravity is constant. WGS-84: rotating ellipsoid with J2 gravity (seed 3.11).
@@ -66,6 +73,7 @@ class AircraftModel {
     /// Add the spinning propellers' angular momentum to the moment equations (seed eqs
     /// 3.110-3.112).
     bool engine_gyroscopic_moments = true;
+    AeroRates aero_rates = AeroRates::kAirMass;
     /// The terrain: a level plane at this height above MSL (m).
     double runway_elevation_m = 0.0;
     double flat_earth_gravity_mps2 = 9.80665;
