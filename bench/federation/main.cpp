@@ -42,6 +42,7 @@ struct Options {
   std::string seedproto;
   std::string qos_file = FEDSIM_QOS_FILE;
   std::string profile = "fedsim_loopback";
+  std::string sync_qos = "reliable";
   bool skip_realtime = false;
 };
 
@@ -65,7 +66,7 @@ json run_federation(const Options& o, const std::string& mode, double rate_hz, i
   const auto common = [&](const std::string& name) {
     return std::vector<std::string>{"--name", name, "--domain", std::to_string(domain),
                                     "--qos-file", o.qos_file, "--participant-profile", o.profile,
-                                    "--log-level", "warn"};
+                                    "--log-level", "warn", "--sync-qos", o.sync_qos};
   };
   for (int i = 0; i < o.federates; ++i) {
     const std::string name = "f" + std::to_string(i);
@@ -183,6 +184,8 @@ int main(int argc, char** argv) {
   app.add_option("--domain", o.first_domain, "first of three DDS domains used")
       ->check(CLI::Range(0, 230))->capture_default_str();
   app.add_option("--participant-profile", o.profile, "participant QoS profile")->capture_default_str();
+  app.add_option("--sync-qos", o.sync_qos, "tick/acknowledgement QoS: reliable | best_effort")
+      ->check(CLI::IsMember({"reliable", "best_effort"}))->capture_default_str();
   app.add_option("--seedproto", o.seedproto, "also run the seed protocol baseline (path to seedproto)");
   app.add_flag("--lockstep-only", o.skip_realtime, "skip the realtime phases");
   CLI11_PARSE(app, argc, argv);
@@ -192,6 +195,7 @@ int main(int argc, char** argv) {
   out["federates"] = o.federates;
   out["host_cpus"] = std::thread::hardware_concurrency();
   out["participant_profile"] = o.profile;
+  out["sync_qos"] = o.sync_qos;
   std::cerr << "udp ping-pong baseline...\n";
   out["udp_ping_pong"] = udp_ping_pong(20000);
   std::cerr << "lockstep, " << o.lockstep_frames << " frames, " << o.federates << " federates...\n";

@@ -43,11 +43,11 @@ Federate::Federate(const FederateOptions& options) : options_(options) {
   dds_ = DdsParticipant::create(options_.dds);
   done_sample_.federate(options_.name);
   frame_done_pub_ = std::make_unique<Publisher<msg::FrameDone>>(dds_, msg::TOPIC_FRAME_DONE,
-                                                                "frame_done");
+                                                                "frame_done" + options_.sync_qos_suffix);
   status_pub_ = std::make_unique<Publisher<msg::FederateStatus>>(dds_, msg::TOPIC_FEDERATE_STATUS,
                                                                  "status");
   tick_sub_ = std::make_unique<Subscription<msg::FrameTick>>(
-      dds_, msg::TOPIC_FRAME_TICK, "tick",
+      dds_, msg::TOPIC_FRAME_TICK, "tick" + options_.sync_qos_suffix,
       [this](const msg::FrameTick& tick, const auto&) { handle_tick(tick); });
   command_sub_ = std::make_unique<Subscription<msg::SimCommand>>(
       dds_, msg::TOPIC_SIM_COMMAND, "command",

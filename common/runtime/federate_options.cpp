@@ -41,6 +41,11 @@ void add_federate_options(CLI::App& app, FederateOptions& options,
   app.add_option("--duration", options.duration_s, "stop after this many seconds (0 = no limit)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--frames", options.max_frames, "stop after stepping this many frames (0 = no limit)");
+  app.add_option("--sync-qos", options.sync_qos_suffix,
+                 "QoS of the frame tick and acknowledgement: reliable (default) or best_effort "
+                 "(faster; the timing federate repeats a tick whose acknowledgements are overdue)")
+      ->transform([](const std::string& v) { return v == "best_effort" ? "_best_effort" : ""; })
+      ->check(CLI::IsMember({"reliable", "best_effort", "", "_best_effort"}));
   app.add_option("--input-timeout", options.input_timeout_s,
                  "lockstep: seconds to wait for a missing input before stepping without it")
       ->check(CLI::PositiveNumber)

@@ -19,7 +19,7 @@ struct FederateOptions {
   double duration_s = 0.0;         // stop after this many wall-clock seconds (0 = run until told)
   std::uint64_t max_frames = 0;    // stop after stepping this many frames (0 = no limit)
   double input_timeout_s = 1.0;    // lockstep: how long to wait for a missing input sample
-  bool lockstep_member = true;     // acknowledge ticks (false: observe only)
+  std::string sync_qos_suffix;     // "" or "_best_effort": QoS of tick and frame_done
 };
 
 /// Adds --name, --domain, --qos-file, --participant-profile, --log-level, --duration,

@@ -49,13 +49,13 @@ TimingFederate::TimingFederate(TimingOptions options)
   options_.common.dds.name = options_.common.name;
   dds_ = runtime::DdsParticipant::create(options_.common.dds);
   tick_pub_ = std::make_unique<runtime::Publisher<msg::FrameTick>>(dds_, msg::TOPIC_FRAME_TICK,
-                                                                   "tick");
+                                                                   "tick" + options_.common.sync_qos_suffix);
   status_pub_ = std::make_unique<runtime::Publisher<msg::FederateStatus>>(
       dds_, msg::TOPIC_FEDERATE_STATUS, "status");
   command_pub_ = std::make_unique<runtime::Publisher<msg::SimCommand>>(
       dds_, msg::TOPIC_SIM_COMMAND, "command");
   ack_sub_ = std::make_unique<runtime::Subscription<msg::FrameDone>>(
-      dds_, msg::TOPIC_FRAME_DONE, "frame_done",
+      dds_, msg::TOPIC_FRAME_DONE, "frame_done" + options_.common.sync_qos_suffix,
       [this](const msg::FrameDone& ack, const auto& info) { on_ack(ack, info); });
   ack_sub_->set_liveliness_handler([this](const auto& status) { on_liveliness(status); });
   status_sub_ = std::make_unique<runtime::Subscription<msg::FederateStatus>>(

@@ -36,7 +36,7 @@ FederateSpec read_federate(const ConfigNode& node) {
 
 Deployment read(const ConfigNode& root) {
   root.reject_unknown_keys({"name", "mode", "rate_hz", "domain", "qos_file", "participant_profile",
-                            "timing", "federates", "after"});
+                            "sync_qos", "timing", "federates", "after"});
   Deployment d;
   d.file = root.file();
   d.name = root.string("name");
@@ -48,6 +48,7 @@ Deployment read(const ConfigNode& root) {
   }
   d.qos_file = root.string_or("qos_file", "${SOURCE_DIR}/qos/fedsim_qos.xml");
   d.participant_profile = root.string_or("participant_profile", "fedsim_loopback");
+  d.sync_qos = root.choice_or("sync_qos", {"reliable", "best_effort"}, "reliable");
   if (root.has("timing")) {
     const auto timing = root.child("timing");
     timing.reject_unknown_keys({"args", "enabled"});

@@ -269,7 +269,7 @@ int run_deployment(const RunOptions& options) {
     auto common_args = [&](const std::string& name) {
       return std::vector<std::string>{"--name", name, "--domain", std::to_string(domain),
                                       "--qos-file", dds.qos_file, "--participant-profile",
-                                      dds.participant_profile};
+                                      dds.participant_profile, "--sync-qos", d.sync_qos};
     };
     std::string expect;
     for (const auto& f : d.federates) {

@@ -290,7 +290,7 @@ int record(const RecordOptions& options, std::ostream& out, std::ostream& err) {
     federate_options.duration_s = options.duration_s;
     federate_options.max_frames = options.max_frames;
     federate_options.input_timeout_s = options.input_timeout_s;
-    federate_options.lockstep_member = true;
+    federate_options.sync_qos_suffix = options.sync_qos_suffix;
     runtime::Federate federate(federate_options);
     // Readers stop before the federate goes, however this scope is left.
     struct CloseReaders {

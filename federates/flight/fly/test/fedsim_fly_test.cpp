@@ -1,6 +1,318 @@
-// Runs the built fedsim-fly: exit codes, CSV contents, trim output, determinism.
+// Runs the built fedsim-fly: trim JSON and CSV, exit codes for bad input and failed trims (and
+// no CSV then), input profiles absolute and relative, IC files, and bit-identical repeats.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/util/child_process.hpp"
+#include "flight/fly/csv_table.hpp"
+
+namespace fedsim::flight {
 namespace {
-TEST(FedsimFly, Placeholder) {}
+
+namespace fs = std::filesystem;
+
+constexpr double kKt = 1852.0 / 3600.0;
+
+struct FlyRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+class FedsimFly : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = util::temp_dir("fedsim-fly-test-" +
+                          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return dir_ + "/" + name; }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+
+  FlyRun fly(std::vector<std::string> args) const {
+    args.insert(args.begin(), FEDSIM_FLY_BINARY);
+    util::ChildProcess child(args, path("fly.log"));
+    FlyRun run;
+    EXPECT_TRUE(child.wait(120.0)) << "fedsim-fly did not finish";
+    run.exit_code = child.exit_code();
+    run.output = child.output();
+    return run;
+  }
+
+  /// The JSON object fedsim-fly printed on a line of its own.
+  static nlohmann::json json_of(const std::string& output) {
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);) {
+      if (!line.empty() && line.front() == '{') return nlohmann::json::parse(line);
+    }
+    ADD_FAILURE() << "no JSON line in: " << output;
+    return {};
+  }
+
+  std::vector<std::string> level_trim() const {
+    return {"--aircraft", "c172", "--trim", "level", "--alt-ft", "4000", "--ktas", "100",
+            "--heading", "90", "--lat", "28", "--lon", "-90"};
+  }
+
+  static std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  }
+
+  std::string dir_;
+};
+
+TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
+  const std::string out = path("level.csv");
+  const FlyRun run = fly(join(level_trim(), {"--duration", "10", "--rate", "50", "--out", out}));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json trim = json_of(run.output);
+  EXPECT_TRUE(trim["converged"].get<bool>());
+  EXPECT_EQ(trim["kind"], "level");
+  EXPECT_NEAR(trim["tas_kt"].get<double>(), 100.0, 1e-9);
+  EXPECT_NEAR(trim["altitude_ft"].get<double>(), 4000.0, 1e-6);
+  for (const char* key : {"alpha_deg", "theta_deg", "elevator", "aileron", "rudder", "throttle",
+                          "elevator_deg", "thrust_n"}) {
+    EXPECT_TRUE(trim.contains(key)) << key;
+  }
+  for (const auto& [axis, value] : trim["residuals"].items()) {
+    EXPECT_LT(std::abs(value.get<double>()), 1e-4) << axis;
+  }
+  EXPECT_EQ(trim["residuals"].size(), 6u);
+
+  const CsvTable csv = CsvTable::load(out);
+  ASSERT_EQ(csv.rows(), 501u);  // t = 0 and 500 frames of 20 ms
+  EXPECT_DOUBLE_EQ(csv.column("time_s").front(), 0.0);
+  EXPECT_NEAR(csv.column("time_s")[1], 0.02, 1e-12);
+  EXPECT_NEAR(csv.column("time_s").back(), 10.0, 1e-9);
+  EXPECT_NEAR(csv.column("alt_m").front(), 1219.2, 1e-6);
+  EXPECT_NEAR(csv.column("lat_deg").front(), 28.0, 1e-9);
+  EXPECT_NEAR(csv.column("tas_kt").front(), 100.0, 1e-6);
+  EXPECT_NEAR(csv.column("psi_deg").front(), 90.0, 1e-9);
+  EXPECT_NEAR(csv.column("elevator_cmd").front(), trim["elevator"].get<double>(), 1e-9);
+  EXPECT_NEAR(csv.column("eng1_throttle_cmd").front(), trim["throttle"].get<double>(), 1e-9);
+  EXPECT_GT(csv.column("eng1_rpm").front(), 1500.0);  // settled at the trimmed throttle
+  EXPECT_NEAR(csv.column("alt_m").back(), 1219.2, 1.0);  // trimmed: holds its height
+  for (const char* column : {"ecef_x_m", "vn_mps", "u_mps", "p_dps", "q0", "alpha_deg", "cas_mps",
+                             "mach", "qbar_pa", "thrust_n", "mass_kg", "gear_fz_n",
+                             "gear1_force_n", "eng1_n1_pct", "fz_eye_mps2"}) {
+    EXPECT_TRUE(csv.has(column)) << column;
+  }
+}
+
+TEST_F(FedsimFly, EveryColumnNameCarriesItsUnit) {
+  const std::string out = path("units.csv");
+  ASSERT_EQ(fly(join(level_trim(), {"--duration", "0.1", "--rate", "10", "--out", out, "--quiet"}))
+                .exit_code,
+            0);
+  // A unit suffix, or a quantity that has none (commands, normalised positions, flags,
+  // coefficients, the quaternion, Mach).
+  const std::regex with_unit(
+      ".*_(s|deg|m|mps|dps|dps2|mps2|pa|k|kgpm3|n|nm|kg|kgps|w|pct|g|kt|rpm)$");
+  const std::regex unitless(
+      "(q[0-3]|mach|cl|cd|cy|croll|cm|cn|stalled|wow|numerical_fault|.*_cmd|.*_norm|.*_running|"
+      "gear\\d+_wow)");
+  const CsvTable csv = CsvTable::load(out);
+  for (const std::string& name : csv.names()) {
+    EXPECT_TRUE(std::regex_match(name, with_unit) || std::regex_match(name, unitless)) << name;
+  }
+}
+
+TEST_F(FedsimFly, ATrimOutOfReachExitsThreeWithTheReasonAndNoCsv) {
+  const std::string out = path("fast.csv");
+  const FlyRun run = fly({"--aircraft", "c172", "--trim", "level", "--alt-ft", "4000", "--ktas",
+                       "160", "--duration", "10", "--rate", "50", "--out", out});
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_NE(run.output.find("throttle saturated at 1.0: the aircraft cannot hold 4000 ft at 160 KTAS"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(json_of(run.output)["converged"].get<bool>());
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
+  const std::string out = path("bad.csv");
+  const std::string bad_profile = write("bad_profile.csv", "time_s, elevator\n0, 0\n1, banana\n");
+  const std::string unknown_channel = write("unknown.csv", "time_s, wheel\n0, 0\n");
+  const std::string bad_ic = write("bad_ic.yaml",
+                                   "fedsim_initial_conditions: 1\n"
+                                   "position: {lat_deg: 0, lon_deg: 0, alt_m: 100}\n"
+                                   "velocity_ned_mps: [50, 0]\n");
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"--aircraft", "concorde", "--trim", "level", "--ktas", "100"}, "unknown aircraft pack 'concorde'"},
+      {join(level_trim(), {"--warp-drive"}), "--warp-drive"},
+      {join(level_trim(), {"--inputs", bad_profile}), "bad_profile.csv:3"},
+      {join(level_trim(), {"--inputs", unknown_channel}), "wheel"},
+      {join(level_trim(), {"--inputs", path("missing.csv")}), "missing.csv"},
+      {join(level_trim(), {"--inputs-relative"}), "--inputs-relative needs --inputs"},
+      {{"--aircraft", "c172", "--ic", bad_ic}, "bad_ic.yaml:3: velocity_ned_mps"},
+      {{"--aircraft", "c172", "--trim", "level"}, "--ktas or --kcas"},
+      {{"--aircraft", "c172", "--trim", "spin", "--ktas", "100"}, "--trim"},
+      {join(level_trim(), {"--integrator", "verlet"}), "--integrator"},
+  };
+  for (const Case& c : cases) {
+    const FlyRun run = fly(join(c.args, {"--duration", "1", "--rate", "50", "--out", out}));
+    EXPECT_EQ(run.exit_code, 2) << c.says << "\n" << run.output;
+    EXPECT_NE(run.output.find(c.says), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(out)) << c.says;
+  }
+  // Required options.
+  EXPECT_EQ(fly(join(level_trim(), {"--rate", "50", "--out", out})).exit_code, 2);
+  EXPECT_FALSE(fs::exists(out));
+  // --help is not an error.
+  const FlyRun help = fly({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--inputs-relative"), std::string::npos);
+}
+
+TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
+  const std::string profile = write("doublet.csv",
+                                    "# elevator doublet about the trim\n"
+                                    "time_s, elevator\n"
+                                    "0.0, 0.0\n1.0, 0.0\n1.0, -0.1\n2.0, -0.1\n2.0, 0.1\n3.0, 0.1\n"
+                                    "3.0, 0.0\n");
+  const std::string out = path("doublet.csv.out");
+  const FlyRun run = fly(join(level_trim(), {"--inputs", profile, "--inputs-relative", "--duration",
+                                          "20", "--rate", "100", "--out", out, "--quiet"}));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const double trimmed = json_of(run.output)["elevator"].get<double>();
+  const CsvTable csv = CsvTable::load(out);
+  const auto& t = csv.column("time_s");
+  const auto& elevator = csv.column("elevator_cmd");
+  const auto& q = csv.column("q_dps");
+  double q_max = 0.0;
+  for (std::size_t i = 0; i < csv.rows(); ++i) {
+    const double expected = t[i] < 1.0 - 1e-9 ? 0.0 : t[i] < 2.0 - 1e-9 ? -0.1 : t[i] < 3.0 - 1e-9 ? 0.1 : 0.0;
+    ASSERT_NEAR(elevator[i], trimmed + expected, 1e-9) << "t = " << t[i];
+    q_max = std::max(q_max, q[i]);
+  }
+  EXPECT_GT(q_max, 2.0);  // stick back: nose up (deg/s)
+  // The throttle the profile does not drive stays at the trim.
+  EXPECT_NEAR(csv.column("eng1_throttle_cmd").back(), json_of(run.output)["throttle"].get<double>(), 1e-12);
+}
+
+TEST_F(FedsimFly, AnAbsoluteProfileReplacesTheChannelsItDrives) {
+  const std::string profile = write("idle.csv", "time_s, throttle, flaps\n0, 0.0, 0.0\n5, 0.0, 1.0\n");
+  const std::string out = path("idle.out");
+  ASSERT_EQ(fly(join(level_trim(), {"--inputs", profile, "--duration", "6", "--rate", "50",
+                                    "--out", out, "--quiet"}))
+                .exit_code,
+            0);
+  const CsvTable csv = CsvTable::load(out);
+  EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 0.0);
+  EXPECT_NEAR(csv.column("flaps_cmd")[125], 0.5, 1e-9);  // ramp: half way at 2.5 s
+  EXPECT_LT(csv.column("eng1_rpm").back(), csv.column("eng1_rpm").front() - 300.0);
+  EXPECT_NEAR(csv.column("flap_norm").back(), 1.0, 1e-9);  // 4 s of transit for full flap
+}
+
+TEST_F(FedsimFly, StartsFromAnInitialConditionFile) {
+  const std::string ic = write("c172.yaml",
+                               "fedsim_initial_conditions: 1\n"
+                               "position: {lat_deg: 45, lon_deg: 7, alt_ft: 6000}\n"
+                               "velocity_body_mps: [50, 0, 2]\n"
+                               "attitude_deg: {phi: 10, theta: 0, psi: 180}\n"
+                               "controls: {throttle: 0.75, elevator: 0.1, flaps: 0.5}\n"
+                               "weather:\n"
+                               "  wind: [{alt_m: 0, speed_mps: 10, from_deg: 180}]\n");
+  const std::string out = path("ic.out");
+  const FlyRun run = fly({"--aircraft", "c172", "--ic", ic, "--duration", "2", "--rate", "100",
+                       "--integrator", "ab2", "--out", out, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find('{'), std::string::npos);  // no trim, no JSON
+  const CsvTable csv = CsvTable::load(out);
+  EXPECT_NEAR(csv.column("lat_deg").front(), 45.0, 1e-9);
+  EXPECT_NEAR(csv.column("alt_m").front(), 6000.0 * 0.3048, 1e-6);
+  EXPECT_NEAR(csv.column("u_mps").front(), 50.0, 1e-9);
+  EXPECT_NEAR(csv.column("phi_deg").front(), 10.0, 1e-9);
+  // 10 m/s of headwind on 50 m/s southward; rolled, (v, w) keep their 2 m/s.
+  EXPECT_NEAR(csv.column("tas_mps").front(), std::hypot(60.0, 2.0), 1e-6);
+  EXPECT_NEAR(csv.column("eng1_throttle_cmd").front(), 0.75, 1e-12);
+  EXPECT_NEAR(csv.column("flap_norm").front(), 0.5, 1e-12);  // surfaces start where they point
+  // The engine starts settled at the file's throttle and airspeed, not spooling up from idle
+  // (thousands of rpm per second): in the first 0.1 s its rpm hardly moves.
+  EXPECT_GT(csv.column("eng1_rpm").front(), 2000.0);
+  EXPECT_NEAR(csv.column("eng1_rpm")[10], csv.column("eng1_rpm").front(), 5.0);
+}
+
+TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
+  auto turbulent = [&](const std::string& name, const std::string& seed) {
+    const std::string out = path(name);
+    const FlyRun run = fly(join(level_trim(), {"--turbulence", "moderate", "--seed", seed,
+                                            "--integrator", "ab2", "--duration", "30", "--rate",
+                                            "100", "--out", out, "--quiet"}));
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return util::read_file(out);
+  };
+  const std::string a = turbulent("a.csv", "5");
+  const std::string b = turbulent("b.csv", "5");
+  const std::string c = turbulent("c.csv", "6");
+  ASSERT_GT(a.size(), 100000u);
+  EXPECT_TRUE(a == b) << "two runs with seed 5 differ";
+  EXPECT_FALSE(a == c) << "seeds 5 and 6 gave the same turbulence";
+  // And the turbulence is really there: the wind column moves.
+  const CsvTable csv = CsvTable::load(path("a.csv"));
+  const auto& wind = csv.column("wind_d_mps");
+  EXPECT_GT(*std::max_element(wind.begin(), wind.end()) - *std::min_element(wind.begin(), wind.end()), 0.5);
+}
+
+TEST_F(FedsimFly, OutputEveryNthFrame) {
+  const std::string out = path("sparse.csv");
+  ASSERT_EQ(fly(join(level_trim(), {"--duration", "10", "--rate", "100", "--output-every", "25",
+                                    "--out", out, "--quiet"}))
+                .exit_code,
+            0);
+  const CsvTable csv = CsvTable::load(out);
+  EXPECT_EQ(csv.rows(), 41u);
+  EXPECT_NEAR(csv.column("time_s")[1], 0.25, 1e-12);
+}
+
+TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
+  const std::string out = path("ground.csv");
+  const FlyRun run = fly({"--aircraft", "b737", "--trim", "ground", "--runway-elevation-m", "430",
+                       "--heading", "120", "--duration", "5", "--rate", "50", "--out", out,
+                       "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
+  const CsvTable csv = CsvTable::load(out);
+  EXPECT_EQ(csv.column("wow").back(), 1.0);
+  EXPECT_GT(csv.column("alt_m").back(), 430.0);
+  EXPECT_LT(csv.column("h_agl_m").back(), 3.0);
+  EXPECT_LT(csv.column("ground_speed_mps").back(), 0.05);
+  EXPECT_EQ(csv.column("brake_left_cmd").back(), 1.0);
+}
+
+TEST_F(FedsimFly, ClimbAndTurnTrims) {
+  const std::string out = path("x.csv");
+  FlyRun run = fly({"--aircraft", "b737", "--trim", "climb", "--alt-ft", "10000", "--kcas", "250",
+                 "--gamma-deg", "3", "--duration", "1", "--rate", "50", "--out", out, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NEAR(json_of(run.output)["flight_path_deg"].get<double>(), 3.0, 1e-6);
+  EXPECT_NEAR(json_of(run.output)["cas_kt"].get<double>(), 250.0, 1e-6);
+  run = fly({"--aircraft", "c172", "--trim", "turn", "--bank-deg", "30", "--alt-ft", "4000",
+             "--ktas", "100", "--duration", "1", "--rate", "50", "--out", out, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json trim = json_of(run.output);
+  EXPECT_NEAR(trim["phi_deg"].get<double>(), 30.0, 1e-9);
+  EXPECT_NEAR(trim["turn_rate_dps"].get<double>(),
+              9.80665 * std::tan(30.0 * M_PI / 180.0) / (100.0 * kKt) * 180.0 / M_PI, 0.05);
+}
+
 }  // namespace
+}  // namespace fedsim::flight

@@ -20,8 +20,21 @@ namespace {
 constexpr double kG0 = 9.80665;
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kFeetToMetres = 0.3048;
-/// Quaternion constraint gain as k h (seed eqs 3.67-3.70: k h <= 1).
-constexpr double kQuaternionConstraintKh = 0.5;
+/// Quaternion constraint gain as k h (seed eqs 3.67-3.70: k h <= 1). The correction
+/// k (1 - |q|^2) q pulls the norm back at the rate 2k, an eigenvalue -2 k h per step, which must
+/// lie inside the method's stability interval on the negative real axis: (-2, 0) for Euler,
+/// (-2.79, 0) for RK4, but only (-1, 0), (-6/11, 0) and (-3/10, 0) for Adams-Bashforth 2, 3
+/// and 4 (Hairer & Wanner, Solving ODEs II, fig. V.1.1); AB4 with k h = 0.5 diverges.
+double quaternion_constraint_kh(IntegrationMethod method) {
+  switch (method) {
+    case IntegrationMethod::kEuler:
+    case IntegrationMethod::kRk4: return 0.5;
+    case IntegrationMethod::kAb2: return 0.25;
+    case IntegrationMethod::kAb3:
+    case IntegrationMethod::kAb4: return 0.1;
+  }
+  return 0.1;
+}
 /// The equations of motion take new mass properties when the mass has changed by this
 /// fraction: a fuel-burn step changes it by ~1e-7, and each update validates the tensor (an
 /// eigen-decomposition). The CG used for the moment arms is always the current one.
@@ -266,16 +279,32 @@ void AircraftModel::step(double frame_dt_s) {
     const RigidBodyDynamics::StateVector previous = x_;
     advance_systems(h);
     integrate_body(h);
-    if (!x_.allFinite()) {
-      // Never publish NaN: drop the step, keep the last finite state and say so.
+    time_s_ += h;
+    if (state_is_sound()) evaluate_current();
+    if (!state_is_sound() || !evaluation_is_finite()) {
+      // Never publish NaN: drop the step, keep the last sound state and say so.
       x_ = previous;
       integrator_.restart();
+      alpha_dot_radps_ = 0.0;
+      beta_dot_radps_ = 0.0;
       outputs_.numerical_fault = true;
+      evaluate_current();
     }
-    time_s_ += h;
-    evaluate_current();
   }
   fill_outputs();
+}
+
+bool AircraftModel::state_is_sound() const {
+  // Finite, and an attitude quaternion near unit length (the constraint keeps it within 1e-6;
+  // far off means the integration has diverged).
+  return x_.allFinite() && std::abs(x_.segment<4>(6).norm() - 1.0) < 0.1;
+}
+
+bool AircraftModel::evaluation_is_finite() const {
+  const Evaluation& e = *current_;
+  return e.wrench.force_b_n.allFinite() && e.wrench.moment_b_nm.allFinite() &&
+         std::isfinite(e.tas_mps) && std::isfinite(alpha_dot_radps_) &&
+         std::isfinite(beta_dot_radps_);
 }
 
 void AircraftModel::set_controls(const AircraftControls& controls) {
@@ -334,7 +363,8 @@ bool AircraftModel::engine_failed(std::size_t engine) const {
 void AircraftModel::set_runway_elevation_m(double elevation_m) {
   if (!std::isfinite(elevation_m)) return;
   runway_elevation_m_ = elevation_m;
-  current_valid_ = false;
+  evaluate_current();  // the gear and the height above ground change at once
+  fill_outputs();
 }
 
 void AircraftModel::set_integration_method(IntegrationMethod method) {
@@ -659,7 +689,8 @@ void AircraftModel::advance_systems(double dt_s) {
 
   // 6. Aerodynamics: the stall hysteresis follows alpha in evaluate_current().
 
-  // 8. Mass balance: burn the fuel.
+  // 8. Mass balance: burn the fuel (unless frozen by the instructor).
+  if (fuel_frozen_) return;
   MassBalance::Inputs burn;
   burn.engine_fuel_flow_kgps = fuel_flows_kgps_;
   mass_->step(dt_s, burn);
@@ -669,8 +700,8 @@ void AircraftModel::advance_systems(double dt_s) {
 void AircraftModel::integrate_body(double dt_s) {
   // 9. Equations of motion: the first derivative is the present evaluation's; the integrator's
   // trial states re-evaluate the force chain (held engines and actuators).
-  const double correction =
-      RigidBodyDynamics::quaternion_correction_per_s(x_, kQuaternionConstraintKh, dt_s);
+  const double correction = RigidBodyDynamics::quaternion_correction_per_s(
+      x_, quaternion_constraint_kh(integrator_.method()), dt_s);
   const RigidBodyDynamics::StateVector f0 = dynamics_.derivative(x_, current_->wrench, correction);
   auto derivative = [this, correction](double, const RigidBodyDynamics::StateVector& x) {
     evaluate(RigidBodyDynamics::unpack(x), *trial_, false);

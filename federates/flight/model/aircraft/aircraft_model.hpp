@@ -148,6 +148,10 @@ class AircraftModel {
   /// (settle_systems or a reset with running engines).
   void set_engine_running(std::size_t engine, bool running);
   bool engine_running(std::size_t engine) const;
+  /// Fuel freeze (an instructor function): the engines still report their fuel flow but the
+  /// tanks, mass, CG and inertia stay as they are.
+  void set_fuel_frozen(bool frozen) { fuel_frozen_ = frozen; }
+  bool fuel_frozen() const { return fuel_frozen_; }
   /// Moves the terrain plane (m above MSL).
   void set_runway_elevation_m(double elevation_m);
   double runway_elevation_m() const { return runway_elevation_m_; }
@@ -196,6 +200,8 @@ class AircraftModel {
   void fill_engine_outputs();
   void fill_contact_outputs();
   void update_mass_properties(bool force);
+  bool state_is_sound() const;
+  bool evaluation_is_finite() const;
   void pin_origin(const GeodeticPosition& at);
   void restart_turbulence();
   bool engine_burning(std::size_t engine) const;
@@ -233,7 +239,8 @@ class AircraftModel {
   RigidBodyDynamics::StateVector x_;
   double time_s_ = 0.0;
   bool current_valid_ = false;
-  bool gusts_active_ = false;  // false from a reset/set_state until turbulence next steps
+  bool gusts_active_ = false;
+  bool fuel_frozen_ = false;  // false from a reset/set_state until turbulence next steps
   double alpha_dot_radps_ = 0.0;  // from the last evaluation's accelerations (one step old)
   double beta_dot_radps_ = 0.0;
   double mass_used_by_dynamics_kg_ = 0.0;

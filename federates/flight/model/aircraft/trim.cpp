@@ -429,12 +429,9 @@ std::string failure_reason(const TrimProblem& problem, const Eigen::VectorXd& z,
   auto at_lower = [&](int k) { return z[k] <= problem.lower()[k] + 1e-9; };
   const std::string cannot = "the aircraft cannot " + problem.condition_text();
   if (!problem.ground()) {
+    // Lift first: at the angle-of-attack limit nothing else can help; then power, then the
+    // controls.
     using P = TrimProblem;
-    if (at_upper(P::kThrottle)) return "throttle saturated at 1.0: " + cannot;
-    if (at_lower(P::kThrottle)) {
-      return "throttle saturated at idle: " + cannot + " without gaining speed (too much thrust "
-             "or too little drag at idle)";
-    }
     if (at_upper(P::kAlpha)) {
       return "angle of attack at its limit of " + format("%.1f deg", problem.upper()[P::kAlpha] / kDeg) +
              ": " + cannot + " (the wing cannot carry the aircraft: below the stall speed)";
@@ -442,6 +439,11 @@ std::string failure_reason(const TrimProblem& problem, const Eigen::VectorXd& z,
     if (at_lower(P::kAlpha)) {
       return "angle of attack at its lower limit of " +
              format("%.1f deg", problem.lower()[P::kAlpha] / kDeg) + ": " + cannot;
+    }
+    if (at_upper(P::kThrottle)) return "throttle saturated at 1.0: " + cannot;
+    if (at_lower(P::kThrottle)) {
+      return "throttle saturated at idle: " + cannot + " without gaining speed (too much thrust "
+             "or too little drag at idle)";
     }
     if (at_lower(P::kElevator)) return "elevator saturated at full nose-up (-1.0): " + cannot;
     if (at_upper(P::kElevator)) return "elevator saturated at full nose-down (+1.0): " + cannot;
