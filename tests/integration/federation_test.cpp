@@ -142,6 +142,26 @@ TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
   EXPECT_GT(frozen_frames, 10);
 }
 
+TEST(Federation, BestEffortSyncQosStillDeliversEveryFrameOnceInOrder) {
+  const int domain = 137;
+  const std::string dir = temp_dir("besteffort");
+  const std::vector<std::string> qos{"--sync-qos", "best_effort"};
+  auto a = start(dir, "a", domain, "fedsim-synthetic", concat({"--trace", dir + "/a.csv"}, qos));
+  auto b = start(dir, "b", domain, "fedsim-synthetic", concat({"--trace", dir + "/b.csv"}, qos));
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      concat({"--mode", "lockstep", "--expect", "a,b", "--frames", "3000",
+                              "--resend-after", "0.05", "--shutdown-on-exit"},
+                             qos));
+  ASSERT_TRUE(timing->wait(60)) << timing->output();
+  EXPECT_EQ(timing->exit_code(), 0) << timing->output();
+  ASSERT_TRUE(a->wait(10));
+  ASSERT_TRUE(b->wait(10));
+  for (const auto& trace : {read_trace(dir + "/a.csv"), read_trace(dir + "/b.csv")}) {
+    ASSERT_EQ(trace.size(), 3000u);
+    for (std::size_t i = 0; i < trace.size(); ++i) ASSERT_EQ(trace[i].frame, i);
+  }
+}
+
 TEST(Federation, KilledFederateIsReportedAndLockstepGoesOn) {
   const int domain = 131;
   const std::string dir = temp_dir("killed");
