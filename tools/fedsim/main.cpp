@@ -1,5 +1,7 @@
 // fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
-// `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics.
+// `fedsim command ...` sends instructor commands; `fedsim topic list|echo|hz` and
+// `fedsim record` monitor and record live topics.
+#include "fedsim/command_cli.hpp"
 #include "fedsim/launcher.hpp"
 #include "topic/topic_commands.hpp"
 
@@ -27,6 +29,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   run_cmd->callback([&] { exit_code = fedsim::launcher::run_deployment(run); });
 
+  fedsim::launcher::add_command_commands(app, exit_code);
   fedsim::tools::add_topic_commands(app);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
