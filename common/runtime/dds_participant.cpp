@@ -79,6 +79,13 @@ fdds::Topic* DdsParticipant::topic_for(const std::string& name, fdds::TypeSuppor
     return it->second;
   }
   const std::string type_name = type.get_type_name();
+  // Announce type names only, not TypeObjects: Fast DDS 2.9 rebuilds a DynamicType from every
+  // remote reader's TypeObject during discovery and crashes (TypeObjectFactory::
+  // get_array_identifier) on an array of structs it has not registered itself, e.g. a process
+  // without AircraftState discovering a reader of it (GearContact gear[8]). Cyclone DDS also
+  // rejects the type-information parameter. fedsim's tools build types from local TypeObjects.
+  type->auto_fill_type_object(false);
+  type->auto_fill_type_information(false);
   if (type.register_type(participant_) != ReturnCode_t::RETCODE_OK &&
       !participant_->find_type(type_name).get()) {
     throw DdsError("cannot register type " + type_name);

@@ -4,6 +4,7 @@
 #include "common/util/child_process.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
+#include "common/runtime/subscription.hpp"
 #include "io/input_profile.hpp"
 
 #include <gtest/gtest.h>
@@ -305,6 +306,96 @@ TEST(Federation, EveryPacketStaysOnLoopback) {
     ++loopback;
   }
   EXPECT_GT(loopback, 100);  // it did talk
+}
+
+
+// The flight federate honours instructor commands: engine failure, reposition to a runway
+// threshold, freeze, reset.
+TEST(Federation, FlightFederateHonoursFailureRepositionFreezeAndReset) {
+  const int domain = 138;
+  const std::string dir = temp_dir("flight");
+  auto flight = start(dir, "flight", domain, "fedsim-flight",
+                      {"--aircraft", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", "--trim",
+                       "level", "--alt-ft", "4000", "--ktas", "100", "--heading", "90", "--lat",
+                       "37.6", "--lon", "-122.3"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "lockstep", "--rate", "50", "--scale", "2", "--expect", "flight",
+                       "--frames", "3000", "--shutdown-on-exit"});
+  runtime::ParticipantOptions o;
+  o.name = "test-instructor";
+  o.domain_id = domain;
+  o.qos_file = runtime::default_qos_file();
+  auto dds = runtime::DdsParticipant::create(o);
+  runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Subscription<msg::AircraftState> state_sub(dds, msg::TOPIC_AIRCRAFT_STATE, "state");
+  runtime::Subscription<msg::EngineState> engine_sub(dds, msg::TOPIC_ENGINE_STATE, "state");
+  msg::AircraftState state;
+  msg::EngineState engine;
+  auto wait_for = [&](const std::function<bool()>& condition, double timeout_s) {
+    for (int i = 0; i < timeout_s * 50; ++i) {
+      if (condition()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+  };
+  auto latest = [&] { return state_sub.latest(state); };
+  ASSERT_TRUE(wait_for([&] { return latest() && state.stamp().sim_time_s() > 1.0; }, 30))
+      << flight->output();
+  EXPECT_NEAR(state.altitude_msl_m(), 4000 * 0.3048, 15.0);
+  EXPECT_NEAR(state.air().tas_mps(), 100 * 1852.0 / 3600, 2.0);
+  ASSERT_TRUE(commands.wait_for_readers(2, std::chrono::seconds(10)));  // timing, flight
+
+  msg::SimCommand fail;
+  fail.kind(msg::COMMAND_FAILURE);
+  fail.target("engine1");
+  fail.failure().active(true);
+  commands.publish(fail);
+  EXPECT_TRUE(wait_for([&] { return engine_sub.latest(engine) && engine.failed(); }, 10))
+      << flight->output();
+
+  msg::SimCommand move;
+  move.kind(msg::COMMAND_REPOSITION);
+  move.reposition().kind(msg::REPOSITION_RUNWAY_THRESHOLD);
+  move.reposition().airport("KSFO");
+  move.reposition().runway("28R");
+  commands.publish(move);
+  ASSERT_TRUE(wait_for([&] { return latest() && state.on_ground(); }, 10)) << flight->output();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  latest();
+  EXPECT_NEAR(state.latitude_rad() * 180 / M_PI, 37.6139, 0.002);
+  EXPECT_NEAR(state.longitude_rad() * 180 / M_PI, -122.3582, 0.002);
+  const double heading_error_deg = std::remainder(state.psi_rad() * 180 / M_PI - 298.0, 360.0);
+  EXPECT_NEAR(heading_error_deg, 0.0, 2.0);  // aligned with runway 28R (298 deg true)
+  EXPECT_LT(state.air().tas_mps(), 1.0);
+
+  send_run_state(commands, msg::RUN_STATE_FREEZE, 2);
+  ASSERT_TRUE(wait_for([&] {
+    msg::AircraftState a, b;
+    if (!state_sub.latest(a)) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    state_sub.latest(b);
+    return b.stamp().frame() > a.stamp().frame() && b.stamp().sim_time_s() == a.stamp().sim_time_s();
+  }, 10)) << "freeze did not hold simulation time while frames went on";
+
+  send_run_state(commands, msg::RUN_STATE_RESET, 3);
+  ASSERT_TRUE(wait_for([&] { return latest() && !state.on_ground() && state.stamp().sim_time_s() < 1.0; }, 10));
+  EXPECT_NEAR(state.altitude_msl_m(), 4000 * 0.3048, 15.0);
+  EXPECT_NEAR(state.latitude_rad() * 180 / M_PI, 37.6, 0.01);
+
+  timing->terminate();
+  ASSERT_TRUE(timing->wait(20));
+  ASSERT_TRUE(flight->wait(20));
+  EXPECT_EQ(flight->exit_code(), 0) << flight->output();
+}
+
+TEST(Federation, FlightFederateRefusesABadAircraftPackBeforeJoining) {
+  const std::string dir = temp_dir("badpack");
+  std::ofstream(dir + "/bad.yaml") << "fedsim_aircraft_pack: 1\nmetadata: {name: x}\n";
+  auto flight = start(dir, "flight", 139, "fedsim-flight",
+                      {"--aircraft", dir + "/bad.yaml", "--trim", "level", "--ktas", "100"});
+  ASSERT_TRUE(flight->wait(20));
+  EXPECT_EQ(flight->exit_code(), 2);
+  EXPECT_NE(flight->output().find("bad.yaml:"), std::string::npos) << flight->output();
 }
 
 }  // namespace
