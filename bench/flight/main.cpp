@@ -8,8 +8,6 @@
 // CPU at random; the best is the model's own speed). The last line is one JSON object with
 // every figure. Target: the C172 at >= 250,000 steps/s with a single-evaluation integrator.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -17,6 +15,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -102,7 +101,8 @@ Figure measure(const Aircraft& a, IntegrationMethod method, double rate_hz, cons
     const long allocations_before = g_allocations.load();
     const auto t0 = std::chrono::steady_clock::now();
     for (long i = 0; i < steps; ++i) model.step(dt);
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double us = wall_s / static_cast<double>(steps) * 1e6;
     if (us < best.us_per_step) {
       best.us_per_step = us;
@@ -110,8 +110,8 @@ Figure measure(const Aircraft& a, IntegrationMethod method, double rate_hz, cons
       best.realtime_factor = best.steps_per_s / rate_hz;
     }
     best.allocations_per_step = std::max(
-        best.allocations_per_step,
-        static_cast<double>(g_allocations.load() - allocations_before) / static_cast<double>(steps));
+        best.allocations_per_step, static_cast<double>(g_allocations.load() - allocations_before) /
+                                       static_cast<double>(steps));
     best.altitude_change_m = model.outputs().geodetic.alt_m - start.position.alt_m;
   }
   return best;
@@ -133,9 +133,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  const std::vector<IntegrationMethod> methods = {IntegrationMethod::kEuler, IntegrationMethod::kAb2,
-                                                  IntegrationMethod::kAb3, IntegrationMethod::kAb4,
-                                                  IntegrationMethod::kRk4};
+  const std::vector<IntegrationMethod> methods = {IntegrationMethod::kEuler,
+                                                  IntegrationMethod::kAb2, IntegrationMethod::kAb3,
+                                                  IntegrationMethod::kAb4, IntegrationMethod::kRk4};
   json results = json::object();
   results["earth"] = o.earth;
   results["simulated_s"] = o.simulated_s;

@@ -30,9 +30,9 @@ std::vector<FlyCheckCase> fly_check_cases() {
 
 TimeHistory nasa_channels_from_fly_csv(const std::string& csv_path) {
   const CsvTable csv = CsvTable::load(csv_path);
-  TimeHistory history({"altitude_m", "north_m", "east_m", "v_north_mps", "v_east_mps",
-                       "v_down_mps", "phi_rad", "theta_rad", "psi_rad", "p_rps", "q_rps",
-                       "r_rps", "lat_rad", "lon_rad"});
+  TimeHistory history({"altitude_m", "north_m", "east_m", "v_north_mps", "v_east_mps", "v_down_mps",
+                       "phi_rad", "theta_rad", "psi_rad", "p_rps", "q_rps", "r_rps", "lat_rad",
+                       "lon_rad"});
   const auto& t = csv.column("time_s");
   const auto& lat = csv.column("lat_deg");
   const auto& lon = csv.column("lon_deg");
@@ -68,8 +68,7 @@ TimeHistory fly_case(const FlyCheckCase& c, const std::string& work_dir) {
   // earth's rate (7.3e-5 rad/s), which case 3 would show 7000 times over its 1e-8 rad/s margin.
   util::ChildProcess fly({FEDSIM_FLY_BINARY, "--aircraft", c.pack, "--ic", ic, "--earth", "wgs84",
                           "--aero-rates", "inertial", "--integrator", "rk4", "--rate", "100",
-                          "--duration",
-                          std::to_string(kDurationS), "--out", csv, "--quiet"},
+                          "--duration", std::to_string(kDurationS), "--out", csv, "--quiet"},
                          work_dir + "/" + c.id + ".log");
   if (!fly.wait(120.0) || fly.exit_code() != 0) {
     throw std::runtime_error("fedsim-fly failed on " + c.id + " (exit " +

@@ -1,6 +1,7 @@
 // fedsim topic hz: the receive rate of a topic over a sliding window, once a second, like
 // `ros2 topic hz`. Samples are not decoded (raw bytes), so any type works.
 #include "tools/topic/dynamic_reader.hpp"
+#include "tools/topic/dynamic_types.hpp"
 #include "tools/topic/raw_type.hpp"
 #include "tools/topic/topic_monitor.hpp"
 #include "tools/topic/topic_tools.hpp"
@@ -70,8 +71,14 @@ int run_topic_hz(const HzOptions& options, std::ostream& out, std::ostream& err)
       for (const auto& e : topic->readers) keyed = keyed || e.keyed;
       err << "fedsim topic hz: '" << options.topic << "' has no writer yet; waiting for one\n";
     }
-    fdds::TypeSupport support(new RawPubSubType(*topic->type_names.begin(), keyed,
-                                                max_size > 0 ? max_size : 65000));
+    // A fedsim type is read through its DynamicType, which computes instance keys; raw bytes
+    // are the fallback for foreign types (keyed ones then rely on the writer's key hash).
+    const std::string& type_name = *topic->type_names.begin();
+    const auto dynamic_type = dynamic_type_by_name(type_name);
+    fdds::TypeSupport support =
+        dynamic_type ? dynamic_type_support(dynamic_type)
+                     : fdds::TypeSupport(new RawPubSubType(type_name, keyed,
+                                                           max_size > 0 ? max_size : 65000));
 
     const std::size_t window = std::max<std::size_t>(options.window, 2);
     std::mutex mutex;

@@ -46,7 +46,8 @@ void BatchFlight::run(double duration_s, double rate_hz, int output_every, CsvRe
     }
     if (frame == frames) break;
     model_.step(dt_s);
-    if (progress && Clock::now() - last_report > std::chrono::duration<double>(kProgressIntervalS)) {
+    if (progress &&
+        Clock::now() - last_report > std::chrono::duration<double>(kProgressIntervalS)) {
       last_report = Clock::now();
       progress(t_s + dt_s, duration_s);
     }

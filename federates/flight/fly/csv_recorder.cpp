@@ -177,9 +177,9 @@ void CsvRecorder::write(const AircraftOutputs& outputs, const AircraftControls& 
   char buffer[32];
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0) line_ += ',';
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer,
-                                      columns_[i].value(outputs, controls),
-                                      std::chars_format::general, kPrecision);
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, columns_[i].value(outputs, controls),
+                      std::chars_format::general, kPrecision);
     line_.append(buffer, result.ptr);
   }
   line_ += '\n';

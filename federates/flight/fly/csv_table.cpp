@@ -13,7 +13,8 @@ std::vector<std::string> split(const std::string& line) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
-    std::string field = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    std::string field =
+        line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const auto first = field.find_first_not_of(" \t\r");
     const auto last = field.find_last_not_of(" \t\r");
     fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
@@ -41,7 +42,8 @@ CsvTable CsvTable::load(const std::string& path) {
     }
     for (std::size_t i = 0; i < fields.size(); ++i) {
       double value = 0.0;
-      const auto [end, error] = std::from_chars(fields[i].data(), fields[i].data() + fields[i].size(), value);
+      const auto [end, error] =
+          std::from_chars(fields[i].data(), fields[i].data() + fields[i].size(), value);
       if (error != std::errc() || end != fields[i].data() + fields[i].size()) {
         throw std::runtime_error(path + ":" + std::to_string(line_no) + ": " + table.names_[i] +
                                  ": not a number: '" + fields[i] + "'");

@@ -12,8 +12,9 @@ void add_fly_options(CLI::App& app, FlyOptions& o) {
       ->required();
   add_start_options(app, o.start);
   app.add_option("--inputs", o.inputs, "scripted input profile (CSV of control channels)");
-  app.add_flag("--inputs-relative", o.inputs_relative,
-               "add the profile's values to the start (trimmed) controls instead of replacing them");
+  app.add_flag(
+      "--inputs-relative", o.inputs_relative,
+      "add the profile's values to the start (trimmed) controls instead of replacing them");
   app.add_option("--duration", o.duration_s, "simulated time [s]")
       ->required()
       ->check(CLI::Range(0.0, 1.0e6));

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <cstdint>
 #include <string>
 
@@ -12,21 +11,21 @@
 namespace fedsim::flight {
 
 struct FlyOptions {
-  std::string aircraft;          // --aircraft: pack file, or a pack name in data/aircraft
-  StartOptions start;            // --ic | --trim ... (shared with fedsim-flight)
-  std::string inputs;            // --inputs profile.csv
-  bool inputs_relative = false;  // --inputs-relative
-  double duration_s = 0.0;       // --duration
-  double rate_hz = 0.0;          // --rate
-  int substeps = 1;              // --substeps
-  std::string earth = "flat";    // --earth
+  std::string aircraft;            // --aircraft: pack file, or a pack name in data/aircraft
+  StartOptions start;              // --ic | --trim ... (shared with fedsim-flight)
+  std::string inputs;              // --inputs profile.csv
+  bool inputs_relative = false;    // --inputs-relative
+  double duration_s = 0.0;         // --duration
+  double rate_hz = 0.0;            // --rate
+  int substeps = 1;                // --substeps
+  std::string earth = "flat";      // --earth
   std::string integrator = "rk4";  // --integrator
-  std::uint64_t seed = 1;        // --seed (turbulence)
+  std::uint64_t seed = 1;          // --seed (turbulence)
   std::string aero_rates = "air";  // --aero-rates air|inertial
-  std::string turbulence;        // --turbulence none|light|moderate|severe (overrides the IC)
-  std::string out;               // --out file.csv
-  int output_every = 1;          // --output-every N frames
-  bool quiet = false;            // --quiet: no progress on stderr
+  std::string turbulence;          // --turbulence none|light|moderate|severe (overrides the IC)
+  std::string out;                 // --out file.csv
+  int output_every = 1;            // --output-every N frames
+  bool quiet = false;              // --quiet: no progress on stderr
 };
 
 /// Adds every fedsim-fly option to `app`.

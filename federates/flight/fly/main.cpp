@@ -6,7 +6,6 @@
 // written); 3 the trim did not converge (its JSON and the reason are printed, nothing written);
 // 1 a failure while running (the partial CSV is removed).
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -70,14 +69,15 @@ int fly(const FlyOptions& o, Prepared& p) {
   BatchFlight::Progress progress;
   if (!o.quiet) {
     progress = [](double simulated_s, double total_s) {
-      std::fprintf(stderr, "fedsim-fly: %.1f of %.1f s simulated (%.0f %%)\n", simulated_s,
-                   total_s, 100.0 * simulated_s / total_s);
+      std::fprintf(stderr, "fedsim-fly: %.1f of %.1f s simulated (%.0f %%)\n", simulated_s, total_s,
+                   100.0 * simulated_s / total_s);
     };
   }
   const auto start = std::chrono::steady_clock::now();
   flight.run(o.duration_s, o.rate_hz, o.output_every, recorder, progress);
   recorder.close();
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet) {
     std::fprintf(stderr, "fedsim-fly: %.1f s flown in %.2f s (%.0fx real time) -> %s\n",
                  o.duration_s, wall_s, o.duration_s / std::max(wall_s, 1e-9), o.out.c_str());

@@ -1,7 +1,7 @@
 // Tests of the mapping between I/O channels and flight-model commands.
-#include <gtest/gtest.h>
-
 #include "flight/fly/control_mapping.hpp"
+
+#include <gtest/gtest.h>
 
 namespace fedsim::flight {
 namespace {

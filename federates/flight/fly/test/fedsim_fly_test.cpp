@@ -2,11 +2,10 @@
 // no CSV then), input profiles absolute and relative, IC files, and bit-identical repeats.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -30,8 +29,9 @@ struct FlyRun {
 class FedsimFly : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = util::temp_dir("fedsim-fly-test-" +
-                          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = util::temp_dir(
+        "fedsim-fly-test-" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -63,11 +63,12 @@ class FedsimFly : public ::testing::Test {
   }
 
   std::vector<std::string> level_trim() const {
-    return {"--aircraft", "c172", "--trim", "level", "--alt-ft", "4000", "--ktas", "100",
-            "--heading", "90", "--lat", "28", "--lon", "-90"};
+    return {"--aircraft", "c172",      "--trim", "level", "--alt-ft", "4000",  "--ktas",
+            "100",        "--heading", "90",     "--lat", "28",       "--lon", "-90"};
   }
 
-  static std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
+  static std::vector<std::string> join(std::vector<std::string> a,
+                                       const std::vector<std::string>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
   }
@@ -104,11 +105,11 @@ TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
   EXPECT_NEAR(csv.column("psi_deg").front(), 90.0, 1e-9);
   EXPECT_NEAR(csv.column("elevator_cmd").front(), trim["elevator"].get<double>(), 1e-9);
   EXPECT_NEAR(csv.column("eng1_throttle_cmd").front(), trim["throttle"].get<double>(), 1e-9);
-  EXPECT_GT(csv.column("eng1_rpm").front(), 1500.0);  // settled at the trimmed throttle
+  EXPECT_GT(csv.column("eng1_rpm").front(), 1500.0);     // settled at the trimmed throttle
   EXPECT_NEAR(csv.column("alt_m").back(), 1219.2, 1.0);  // trimmed: holds its height
-  for (const char* column : {"ecef_x_m", "vn_mps", "u_mps", "p_dps", "q0", "alpha_deg", "cas_mps",
-                             "mach", "qbar_pa", "thrust_n", "mass_kg", "gear_fz_n",
-                             "gear1_force_n", "eng1_n1_pct", "fz_eye_mps2"}) {
+  for (const char* column :
+       {"ecef_x_m", "vn_mps", "u_mps", "p_dps", "q0", "alpha_deg", "cas_mps", "mach", "qbar_pa",
+        "thrust_n", "mass_kg", "gear_fz_n", "gear1_force_n", "eng1_n1_pct", "fz_eye_mps2"}) {
     EXPECT_TRUE(csv.has(column)) << column;
   }
 }
@@ -134,10 +135,11 @@ TEST_F(FedsimFly, EveryColumnNameCarriesItsUnit) {
 TEST_F(FedsimFly, ATrimOutOfReachExitsThreeWithTheReasonAndNoCsv) {
   const std::string out = path("fast.csv");
   const FlyRun run = fly({"--aircraft", "c172", "--trim", "level", "--alt-ft", "4000", "--ktas",
-                       "160", "--duration", "10", "--rate", "50", "--out", out});
+                          "160", "--duration", "10", "--rate", "50", "--out", out});
   EXPECT_EQ(run.exit_code, 3) << run.output;
-  EXPECT_NE(run.output.find("throttle saturated at 1.0: the aircraft cannot hold 4000 ft at 160 KTAS"),
-            std::string::npos)
+  EXPECT_NE(
+      run.output.find("throttle saturated at 1.0: the aircraft cannot hold 4000 ft at 160 KTAS"),
+      std::string::npos)
       << run.output;
   EXPECT_FALSE(json_of(run.output)["converged"].get<bool>());
   EXPECT_FALSE(fs::exists(out));
@@ -156,7 +158,8 @@ TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
     std::string says;
   };
   const std::vector<Case> cases = {
-      {{"--aircraft", "concorde", "--trim", "level", "--ktas", "100"}, "unknown aircraft pack 'concorde'"},
+      {{"--aircraft", "concorde", "--trim", "level", "--ktas", "100"},
+       "unknown aircraft pack 'concorde'"},
       {join(level_trim(), {"--warp-drive"}), "--warp-drive"},
       {join(level_trim(), {"--inputs", bad_profile}), "bad_profile.csv:3"},
       {join(level_trim(), {"--inputs", unknown_channel}), "wheel"},
@@ -190,7 +193,7 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
                                     "3.0, 0.0\n");
   const std::string out = path("doublet.csv.out");
   const FlyRun run = fly(join(level_trim(), {"--inputs", profile, "--inputs-relative", "--duration",
-                                          "20", "--rate", "100", "--out", out, "--quiet"}));
+                                             "20", "--rate", "100", "--out", out, "--quiet"}));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const double trimmed = json_of(run.output)["elevator"].get<double>();
   const CsvTable csv = CsvTable::load(out);
@@ -199,20 +202,25 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
   const auto& q = csv.column("q_dps");
   double q_max = 0.0;
   for (std::size_t i = 0; i < csv.rows(); ++i) {
-    const double expected = t[i] < 1.0 - 1e-9 ? 0.0 : t[i] < 2.0 - 1e-9 ? -0.1 : t[i] < 3.0 - 1e-9 ? 0.1 : 0.0;
+    const double expected = t[i] < 1.0 - 1e-9   ? 0.0
+                            : t[i] < 2.0 - 1e-9 ? -0.1
+                            : t[i] < 3.0 - 1e-9 ? 0.1
+                                                : 0.0;
     ASSERT_NEAR(elevator[i], trimmed + expected, 1e-9) << "t = " << t[i];
     q_max = std::max(q_max, q[i]);
   }
   EXPECT_GT(q_max, 2.0);  // stick back: nose up (deg/s)
   // The throttle the profile does not drive stays at the trim.
-  EXPECT_NEAR(csv.column("eng1_throttle_cmd").back(), json_of(run.output)["throttle"].get<double>(), 1e-12);
+  EXPECT_NEAR(csv.column("eng1_throttle_cmd").back(), json_of(run.output)["throttle"].get<double>(),
+              1e-12);
 }
 
 TEST_F(FedsimFly, AnAbsoluteProfileReplacesTheChannelsItDrives) {
-  const std::string profile = write("idle.csv", "time_s, throttle, flaps\n0, 0.0, 0.0\n5, 0.0, 1.0\n");
+  const std::string profile =
+      write("idle.csv", "time_s, throttle, flaps\n0, 0.0, 0.0\n5, 0.0, 1.0\n");
   const std::string out = path("idle.out");
-  ASSERT_EQ(fly(join(level_trim(), {"--inputs", profile, "--duration", "6", "--rate", "50",
-                                    "--out", out, "--quiet"}))
+  ASSERT_EQ(fly(join(level_trim(), {"--inputs", profile, "--duration", "6", "--rate", "50", "--out",
+                                    out, "--quiet"}))
                 .exit_code,
             0);
   const CsvTable csv = CsvTable::load(out);
@@ -233,7 +241,7 @@ TEST_F(FedsimFly, StartsFromAnInitialConditionFile) {
                                "  wind: [{alt_m: 0, speed_mps: 10, from_deg: 180}]\n");
   const std::string out = path("ic.out");
   const FlyRun run = fly({"--aircraft", "c172", "--ic", ic, "--duration", "2", "--rate", "100",
-                       "--integrator", "ab2", "--out", out, "--quiet"});
+                          "--integrator", "ab2", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.find('{'), std::string::npos);  // no trim, no JSON
   const CsvTable csv = CsvTable::load(out);
@@ -254,9 +262,9 @@ TEST_F(FedsimFly, StartsFromAnInitialConditionFile) {
 TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
   auto turbulent = [&](const std::string& name, const std::string& seed) {
     const std::string out = path(name);
-    const FlyRun run = fly(join(level_trim(), {"--turbulence", "moderate", "--seed", seed,
-                                            "--integrator", "ab2", "--duration", "30", "--rate",
-                                            "100", "--out", out, "--quiet"}));
+    const FlyRun run =
+        fly(join(level_trim(), {"--turbulence", "moderate", "--seed", seed, "--integrator", "ab2",
+                                "--duration", "30", "--rate", "100", "--out", out, "--quiet"}));
     EXPECT_EQ(run.exit_code, 0) << run.output;
     return util::read_file(out);
   };
@@ -269,7 +277,9 @@ TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
   // And the turbulence is really there: the wind column moves.
   const CsvTable csv = CsvTable::load(path("a.csv"));
   const auto& wind = csv.column("wind_d_mps");
-  EXPECT_GT(*std::max_element(wind.begin(), wind.end()) - *std::min_element(wind.begin(), wind.end()), 0.5);
+  EXPECT_GT(
+      *std::max_element(wind.begin(), wind.end()) - *std::min_element(wind.begin(), wind.end()),
+      0.5);
 }
 
 TEST_F(FedsimFly, OutputEveryNthFrame) {
@@ -285,9 +295,9 @@ TEST_F(FedsimFly, OutputEveryNthFrame) {
 
 TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
   const std::string out = path("ground.csv");
-  const FlyRun run = fly({"--aircraft", "b737", "--trim", "ground", "--runway-elevation-m", "430",
-                       "--heading", "120", "--duration", "5", "--rate", "50", "--out", out,
-                       "--quiet"});
+  const FlyRun run =
+      fly({"--aircraft", "b737", "--trim", "ground", "--runway-elevation-m", "430", "--heading",
+           "120", "--duration", "5", "--rate", "50", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
   const CsvTable csv = CsvTable::load(out);
@@ -300,8 +310,9 @@ TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
 
 TEST_F(FedsimFly, ClimbAndTurnTrims) {
   const std::string out = path("x.csv");
-  FlyRun run = fly({"--aircraft", "b737", "--trim", "climb", "--alt-ft", "10000", "--kcas", "250",
-                 "--gamma-deg", "3", "--duration", "1", "--rate", "50", "--out", out, "--quiet"});
+  FlyRun run =
+      fly({"--aircraft", "b737", "--trim", "climb", "--alt-ft", "10000", "--kcas", "250",
+           "--gamma-deg", "3", "--duration", "1", "--rate", "50", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NEAR(json_of(run.output)["flight_path_deg"].get<double>(), 3.0, 1e-6);
   EXPECT_NEAR(json_of(run.output)["cas_kt"].get<double>(), 250.0, 1e-6);

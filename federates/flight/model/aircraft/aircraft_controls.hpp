@@ -15,22 +15,22 @@ namespace fedsim::flight {
 struct AircraftControls {
   static constexpr std::size_t kMaxEngines = 4;
 
-  double elevator = 0.0;       ///< -1..1
-  double aileron = 0.0;        ///< -1..1
-  double rudder = 0.0;         ///< -1..1
-  double elevator_trim = 0.0;  ///< -1..1, same sense as elevator
-  double aileron_trim = 0.0;   ///< -1..1
-  double rudder_trim = 0.0;    ///< -1..1
+  double elevator = 0.0;                                          ///< -1..1
+  double aileron = 0.0;                                           ///< -1..1
+  double rudder = 0.0;                                            ///< -1..1
+  double elevator_trim = 0.0;                                     ///< -1..1, same sense as elevator
+  double aileron_trim = 0.0;                                      ///< -1..1
+  double rudder_trim = 0.0;                                       ///< -1..1
   std::array<double, kMaxEngines> throttle{0.0, 0.0, 0.0, 0.0};   ///< 0..1 per engine
   std::array<double, kMaxEngines> mixture{1.0, 1.0, 1.0, 1.0};    ///< 0..1, 1 = full rich
   std::array<double, kMaxEngines> propeller{1.0, 1.0, 1.0, 1.0};  ///< 0..1, 1 = fine / max rpm
-  double flaps = 0.0;          ///< 0..1 of full flap travel
-  double speedbrake = 0.0;     ///< 0..1
-  double spoilers = 0.0;       ///< 0..1 (ground spoilers)
-  bool gear_down = true;       ///< gear lever
-  double brake_left = 0.0;     ///< 0..1
-  double brake_right = 0.0;    ///< 0..1
-  double steering = 0.0;       ///< -1..1, + = nose right
+  double flaps = 0.0;                                             ///< 0..1 of full flap travel
+  double speedbrake = 0.0;                                        ///< 0..1
+  double spoilers = 0.0;                                          ///< 0..1 (ground spoilers)
+  bool gear_down = true;                                          ///< gear lever
+  double brake_left = 0.0;                                        ///< 0..1
+  double brake_right = 0.0;                                       ///< 0..1
+  double steering = 0.0;                                          ///< -1..1, + = nose right
 
   /// Sets every engine's throttle.
   void set_throttle(double value) { throttle.fill(value); }

@@ -3,7 +3,6 @@
 #include "flight/model/aircraft/aircraft_model.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -28,10 +27,13 @@ constexpr double kFeetToMetres = 0.3048;
 double quaternion_constraint_kh(IntegrationMethod method) {
   switch (method) {
     case IntegrationMethod::kEuler:
-    case IntegrationMethod::kRk4: return 0.5;
-    case IntegrationMethod::kAb2: return 0.25;
+    case IntegrationMethod::kRk4:
+      return 0.5;
+    case IntegrationMethod::kAb2:
+      return 0.25;
     case IntegrationMethod::kAb3:
-    case IntegrationMethod::kAb4: return 0.1;
+    case IntegrationMethod::kAb4:
+      return 0.1;
   }
   return 0.1;
 }
@@ -152,7 +154,8 @@ struct AircraftModel::Evaluation {
 
 void AircraftModel::Options::validate() const {
   if (substeps < 1 || substeps > 1000) {
-    throw std::invalid_argument("options.substeps must be 1..1000, got " + std::to_string(substeps));
+    throw std::invalid_argument("options.substeps must be 1..1000, got " +
+                                std::to_string(substeps));
   }
   if (!std::isfinite(runway_elevation_m) || std::abs(runway_elevation_m) > 10000.0) {
     throw std::invalid_argument("options.runway_elevation_m must be finite and within +-10 km");
@@ -437,9 +440,10 @@ void AircraftModel::set_state(const AircraftInitialConditions& state) {
   pin_origin(state.position);
   InitialConditions body;
   body.position = state.position;
-  body.velocity_ned_mps = state.velocity_frame == AircraftInitialConditions::VelocityFrame::kNed
-                              ? state.velocity_mps
-                              : Eigen::Vector3d(dcm_from_euler(state.attitude) * state.velocity_mps);
+  body.velocity_ned_mps =
+      state.velocity_frame == AircraftInitialConditions::VelocityFrame::kNed
+          ? state.velocity_mps
+          : Eigen::Vector3d(dcm_from_euler(state.attitude) * state.velocity_mps);
   body.attitude = state.attitude;
   body.omega_b_rps = state.omega_b_rps;
   body.omega_relative_to_earth = state.omega_relative_to_earth;
@@ -621,8 +625,9 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   aero_in.speedbrake_norm = position_of(s.speedbrake);
   aero_in.spoiler_norm = position_of(s.spoilers);
   aero_in.aero_rp_height_agl_m = e.height_agl_m - (e.ned_from_body * arp_from_cg).z();
-  e.aero = update_hysteresis ? aerodynamics_.evaluate(aero_in)
-                             : aerodynamics_.compute(aero_in, aerodynamics_.stall_hysteresis_active());
+  e.aero = update_hysteresis
+               ? aerodynamics_.evaluate(aero_in)
+               : aerodynamics_.compute(aero_in, aerodynamics_.stall_hysteresis_active());
   e.aero_force_b = e.aero.force_b;
   e.aero_moment_cg = e.aero.moment_b + arp_from_cg.cross(e.aero.force_b);
 
@@ -730,8 +735,8 @@ void AircraftModel::evaluate_current() {
 
 void AircraftModel::update_mass_properties(bool force) {
   const MassBalance::Outputs& mass = mass_->outputs();
-  if (force || std::abs(mass.mass_kg - mass_used_by_dynamics_kg_) >
-                   kMassChangeForUpdate * mass.mass_kg) {
+  if (force ||
+      std::abs(mass.mass_kg - mass_used_by_dynamics_kg_) > kMassChangeForUpdate * mass.mass_kg) {
     dynamics_.set_mass_properties(mass_properties_of(mass));
     mass_used_by_dynamics_kg_ = mass.mass_kg;
   }

@@ -56,9 +56,9 @@ class AircraftModel {
 
   /// Which body rates the aerodynamic rate terms (p_hat, q_hat, r_hat) see.
   enum class AeroRates {
-    kAirMass,  ///< relative to the air mass, which turns with the earth (minus gust rates)
-    kInertial, ///< relative to inertial space (NASA TM-2015-218675 check cases define their
-               ///< damping so; 7.3e-5 rad/s from kAirMass on the rotating earth)
+    kAirMass,   ///< relative to the air mass, which turns with the earth (minus gust rates)
+    kInertial,  ///< relative to inertial space (NASA TM-2015-218675 check cases define their
+                ///< damping so; 7.3e-5 rad/s from kAirMass on the rotating earth)
   };
 
   struct Options {
@@ -240,7 +240,7 @@ class AircraftModel {
   double time_s_ = 0.0;
   bool current_valid_ = false;
   bool gusts_active_ = false;
-  bool fuel_frozen_ = false;  // false from a reset/set_state until turbulence next steps
+  bool fuel_frozen_ = false;      // false from a reset/set_state until turbulence next steps
   double alpha_dot_radps_ = 0.0;  // from the last evaluation's accelerations (one step old)
   double beta_dot_radps_ = 0.0;
   double mass_used_by_dynamics_kg_ = 0.0;

@@ -16,15 +16,15 @@ namespace fedsim::flight {
 /// One engine's figures. Fields that do not apply to the engine type are 0.
 struct EngineOutputs {
   EngineType type = EngineType::piston_propeller;
-  bool running = false;   ///< ignition and fuel on, not failed, not starved
-  bool failed = false;    ///< failed by the instructor
-  bool starved = false;   ///< its feed tanks are empty
-  double throttle = 0.0;  ///< command 0..1
-  double thrust_n = 0.0;  ///< along the thrust line
-  double rpm = 0.0;            ///< piston: engine crankshaft speed
-  double propeller_rpm = 0.0;  ///< piston: propeller speed
-  double n1_pct = 0.0;         ///< turbofan: fan speed
-  double n2_pct = 0.0;         ///< turbofan: core speed
+  bool running = false;               ///< ignition and fuel on, not failed, not starved
+  bool failed = false;                ///< failed by the instructor
+  bool starved = false;               ///< its feed tanks are empty
+  double throttle = 0.0;              ///< command 0..1
+  double thrust_n = 0.0;              ///< along the thrust line
+  double rpm = 0.0;                   ///< piston: engine crankshaft speed
+  double propeller_rpm = 0.0;         ///< piston: propeller speed
+  double n1_pct = 0.0;                ///< turbofan: fan speed
+  double n2_pct = 0.0;                ///< turbofan: core speed
   double manifold_pressure_pa = 0.0;  ///< piston
   double power_w = 0.0;               ///< piston: brake (shaft) power
   double fuel_flow_kgps = 0.0;
@@ -89,8 +89,8 @@ struct AircraftOutputs {
   double static_pressure_pa = 0.0, temperature_k = 0.0, density_kgpm3 = 0.0;
   double speed_of_sound_mps = 0.0;
   double pressure_altitude_m = 0.0;
-  Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();  ///< total: steady + shear + gust
-  Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();  ///< turbulence part of the wind
+  Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();      ///< total: steady + shear + gust
+  Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();      ///< turbulence part of the wind
   Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();  ///< p_g, q_g, r_g (Etkin)
   Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
 
@@ -128,9 +128,9 @@ struct AircraftOutputs {
   std::vector<EngineOutputs> engines;  ///< sized at construction
 
   // Ground contact.
-  bool weight_on_wheels = false;     ///< any wheel carries load
-  bool any_contact = false;          ///< any contact (wheel or structure) carries load
-  double gear_normal_force_n = 0.0;  ///< sum over contacts
+  bool weight_on_wheels = false;         ///< any wheel carries load
+  bool any_contact = false;              ///< any contact (wheel or structure) carries load
+  double gear_normal_force_n = 0.0;      ///< sum over contacts
   std::vector<ContactOutputs> contacts;  ///< sized at construction
 
   /// Set when a step produced a non-finite state: the model kept the last finite state (the

@@ -18,7 +18,8 @@ constexpr double kFeetToMetres = 0.3048;
 constexpr int kFormatVersion = 1;
 
 void require_finite(const Eigen::Vector3d& v, const char* field) {
-  if (!v.allFinite()) throw std::invalid_argument(std::string("initial conditions: ") + field + " must be finite");
+  if (!v.allFinite())
+    throw std::invalid_argument(std::string("initial conditions: ") + field + " must be finite");
 }
 
 // Exactly one of two alternative keys (e.g. alt_m / alt_ft).
@@ -120,7 +121,8 @@ WindShear::Params read_microburst(const ConfigNode& node) {
   p.centre_east_m = node.number("centre_east_m");
   p.downdraft_radius_m = node.number_or("downdraft_radius_m", p.downdraft_radius_m, 1.0, 1e5);
   p.max_outflow_mps = node.number("max_outflow_mps", 0.0, 100.0);
-  p.outflow_height_scale_m = node.number_or("outflow_height_scale_m", p.outflow_height_scale_m, 1.0, 1e4);
+  p.outflow_height_scale_m =
+      node.number_or("outflow_height_scale_m", p.outflow_height_scale_m, 1.0, 1e4);
   p.boundary_layer_height_scale_m =
       node.number_or("boundary_layer_height_scale_m", p.boundary_layer_height_scale_m, 0.1, 1e4);
   if (!(p.outflow_height_scale_m > p.boundary_layer_height_scale_m)) {
@@ -141,7 +143,8 @@ WeatherSettings read_weather(const ConfigNode& node) {
   node.reject_unknown_keys({"temperature_offset_k", "sea_level_pressure_pa", "wind", "microburst",
                             "turbulence", "turbulence_seed"});
   WeatherSettings w;
-  w.atmosphere.sea_level_temperature_offset_k = node.number_or("temperature_offset_k", 0.0, -60.0, 60.0);
+  w.atmosphere.sea_level_temperature_offset_k =
+      node.number_or("temperature_offset_k", 0.0, -60.0, 60.0);
   w.atmosphere.sea_level_pressure_pa =
       node.number_or("sea_level_pressure_pa", us1976::kSeaLevelPressure, 85000.0, 110000.0);
   if (node.has("wind")) w.wind = read_wind(node.child("wind"));
@@ -160,7 +163,8 @@ InitialConditionFile read_file(const ConfigNode& root) {
                             "fuel_kg", "controls", "weather", "runway_elevation_m"});
   const int version = root.integer("fedsim_initial_conditions");
   if (version != kFormatVersion) {
-    root.fail_at("fedsim_initial_conditions", "unsupported format version " + std::to_string(version));
+    root.fail_at("fedsim_initial_conditions",
+                 "unsupported format version " + std::to_string(version));
   }
   InitialConditionFile file;
   AircraftInitialConditions& ic = file.initial;

@@ -3,7 +3,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,7 +44,8 @@ std::string format(const char* fmt, double a) {
 /// constraint, Stevens & Lewis, Aircraft Control and Simulation, 2nd ed., section 3.6).
 double pitch_for_flight_path(double alpha, double beta, double phi, double gamma) {
   const double a = std::cos(alpha) * std::cos(beta);
-  const double b = std::sin(phi) * std::sin(beta) + std::cos(phi) * std::sin(alpha) * std::cos(beta);
+  const double b =
+      std::sin(phi) * std::sin(beta) + std::cos(phi) * std::sin(alpha) * std::cos(beta);
   const double sg = std::sin(gamma);
   const double root = std::sqrt(std::max(a * a - sg * sg + b * b, 0.0));
   return std::atan2(a * b + sg * root, a * a - sg * sg);
@@ -70,7 +70,7 @@ class TrimProblem {
     validate_request();
     ground_ = request.kind == TrimKind::kGround;
     turn_ = request.kind == TrimKind::kTurn;
-    tolerances_ = {kForceTolerance, kForceTolerance, kForceTolerance, kMomentTolerance,
+    tolerances_ = {kForceTolerance,  kForceTolerance,  kForceTolerance, kMomentTolerance,
                    kMomentTolerance, kMomentTolerance, kForceTolerance};
     if (ground_) {
       equations_ = {kWDot, kPDot, kQDot};
@@ -102,16 +102,21 @@ class TrimProblem {
   const std::vector<int>& equation_axes() const { return equations_; }
   const std::array<double, kTrimAxisCount>& tolerances() const { return tolerances_; }
 
-  Eigen::VectorXd clamp(const Eigen::VectorXd& z) const { return z.cwiseMax(lower_).cwiseMin(upper_); }
+  Eigen::VectorXd clamp(const Eigen::VectorXd& z) const {
+    return z.cwiseMax(lower_).cwiseMin(upper_);
+  }
 
   /// Finite-difference step of each unknown.
   double difference_step(int j) const {
     if (ground_) return j == kHeight ? 1e-6 : 1e-7;
     switch (j) {
       case kAlpha:
-      case kBeta: return 1e-6;
-      case kTurnRate: return 1e-7;
-      default: return 1e-5;
+      case kBeta:
+        return 1e-6;
+      case kTurnRate:
+        return 1e-7;
+      default:
+        return 1e-5;
     }
   }
 
@@ -127,8 +132,8 @@ class TrimProblem {
   /// Every residual at the model's present state (TrimAxis order, SI).
   std::array<double, kTrimAxisCount> all_residuals() const {
     const AircraftOutputs& o = model_.outputs();
-    return {o.velocity_b_dot_mps2.x(), o.velocity_b_dot_mps2.y(), o.velocity_b_dot_mps2.z(),
-            o.omega_dot_b_rps2.x(),    o.omega_dot_b_rps2.y(),    o.omega_dot_b_rps2.z(),
+    return {o.velocity_b_dot_mps2.x(),     o.velocity_b_dot_mps2.y(), o.velocity_b_dot_mps2.z(),
+            o.omega_dot_b_rps2.x(),        o.omega_dot_b_rps2.y(),    o.omega_dot_b_rps2.z(),
             o.specific_force_cg_b_mps2.y()};
   }
 
@@ -158,7 +163,8 @@ class TrimProblem {
     const std::string speed = format("%.0f", request_.airspeed_mps / kKnotToMps) +
                               (request_.airspeed_is_cas ? " KCAS" : " KTAS");
     switch (request_.kind) {
-      case TrimKind::kLevel: return "hold " + alt + " at " + speed;
+      case TrimKind::kLevel:
+        return "hold " + alt + " at " + speed;
       case TrimKind::kClimb:
         return (request_.flight_path_rad >= 0.0 ? "climb at " : "descend at ") +
                format("%.1f deg", std::abs(request_.flight_path_rad) / kDeg) + " and " + speed +
@@ -166,7 +172,8 @@ class TrimProblem {
       case TrimKind::kTurn:
         return "hold a " + format("%.0f deg", std::abs(request_.bank_rad) / kDeg) +
                " banked level turn at " + alt + " and " + speed;
-      case TrimKind::kGround: return "rest on the runway";
+      case TrimKind::kGround:
+        return "rest on the runway";
     }
     return "trim";
   }
@@ -174,7 +181,9 @@ class TrimProblem {
  private:
   void validate_request() const {
     const TrimRequest& r = request_;
-    auto bad = [](const std::string& what) { throw std::invalid_argument("trim request: " + what); };
+    auto bad = [](const std::string& what) {
+      throw std::invalid_argument("trim request: " + what);
+    };
     if (!std::isfinite(r.position.lat_rad) || std::abs(r.position.lat_rad) > kPi / 2 ||
         !std::isfinite(r.position.lon_rad) || !std::isfinite(r.position.alt_m)) {
       bad("position must be finite with |lat| <= 90 deg");
@@ -214,8 +223,9 @@ class TrimProblem {
     const double theta = pitch_for_flight_path(alpha, beta, phi, flight_path());
     const EulerAngles attitude{phi, theta, request_.heading_rad};
     const Eigen::Matrix3d ned_from_body = dcm_from_euler(attitude);
-    const Eigen::Vector3d air_b = tas_mps_ * Eigen::Vector3d(std::cos(alpha) * std::cos(beta), std::sin(beta),
-                                                             std::sin(alpha) * std::cos(beta));
+    const Eigen::Vector3d air_b =
+        tas_mps_ * Eigen::Vector3d(std::cos(alpha) * std::cos(beta), std::sin(beta),
+                                   std::sin(alpha) * std::cos(beta));
     const Eigen::Vector3d velocity_ned =
         ned_from_body * air_b + wind_.at(request_.position.alt_m).wind_ned_mps;
 
@@ -279,7 +289,8 @@ class TrimProblem {
         best_alpha = alpha;
       }
       if (previous_w_dot > 0.0 && w_dot <= 0.0) {
-        best_alpha = previous_alpha + (alpha - previous_alpha) * previous_w_dot / (previous_w_dot - w_dot);
+        best_alpha =
+            previous_alpha + (alpha - previous_alpha) * previous_w_dot / (previous_w_dot - w_dot);
         break;
       }
       previous_w_dot = w_dot;
@@ -306,7 +317,8 @@ class TrimProblem {
     Eigen::VectorXd z = Eigen::VectorXd::Zero(3);
     if (!front) return z;
     const double dx = front->position_m.x() - back->position_m.x();
-    const double theta = dx > 1e-6 ? std::atan((front->position_m.z() - back->position_m.z()) / dx) : 0.0;
+    const double theta =
+        dx > 1e-6 ? std::atan((front->position_m.z() - back->position_m.z()) / dx) : 0.0;
     double lowest = -INFINITY;
     for (const GearContactSpec& c : contacts) {
       const Eigen::Vector3d arm = c.position_m - cg;
@@ -433,8 +445,9 @@ std::string failure_reason(const TrimProblem& problem, const Eigen::VectorXd& z,
     // controls.
     using P = TrimProblem;
     if (at_upper(P::kAlpha)) {
-      return "angle of attack at its limit of " + format("%.1f deg", problem.upper()[P::kAlpha] / kDeg) +
-             ": " + cannot + " (the wing cannot carry the aircraft: below the stall speed)";
+      return "angle of attack at its limit of " +
+             format("%.1f deg", problem.upper()[P::kAlpha] / kDeg) + ": " + cannot +
+             " (the wing cannot carry the aircraft: below the stall speed)";
     }
     if (at_lower(P::kAlpha)) {
       return "angle of attack at its lower limit of " +
@@ -442,7 +455,8 @@ std::string failure_reason(const TrimProblem& problem, const Eigen::VectorXd& z,
     }
     if (at_upper(P::kThrottle)) return "throttle saturated at 1.0: " + cannot;
     if (at_lower(P::kThrottle)) {
-      return "throttle saturated at idle: " + cannot + " without gaining speed (too much thrust "
+      return "throttle saturated at idle: " + cannot +
+             " without gaining speed (too much thrust "
              "or too little drag at idle)";
     }
     if (at_lower(P::kElevator)) return "elevator saturated at full nose-up (-1.0): " + cannot;
@@ -470,18 +484,26 @@ TrimKind trim_kind_from_name(std::string_view name) {
 
 std::string_view to_string(TrimKind kind) {
   switch (kind) {
-    case TrimKind::kLevel: return "level";
-    case TrimKind::kClimb: return "climb";
-    case TrimKind::kTurn: return "turn";
-    case TrimKind::kGround: return "ground";
+    case TrimKind::kLevel:
+      return "level";
+    case TrimKind::kClimb:
+      return "climb";
+    case TrimKind::kTurn:
+      return "turn";
+    case TrimKind::kGround:
+      return "ground";
   }
   return "level";
 }
 
 std::string_view trim_axis_name(int axis) {
-  static constexpr std::string_view kNames[kTrimAxisCount] = {
-      "u_dot_mps2", "v_dot_mps2", "w_dot_mps2", "p_dot_rps2", "q_dot_rps2", "r_dot_rps2",
-      "lateral_specific_force_mps2"};
+  static constexpr std::string_view kNames[kTrimAxisCount] = {"u_dot_mps2",
+                                                              "v_dot_mps2",
+                                                              "w_dot_mps2",
+                                                              "p_dot_rps2",
+                                                              "q_dot_rps2",
+                                                              "r_dot_rps2",
+                                                              "lateral_specific_force_mps2"};
   return axis >= 0 && axis < kTrimAxisCount ? kNames[axis] : "unknown";
 }
 
@@ -490,7 +512,8 @@ TrimResult Trim::solve(const TrimRequest& request) {
   TrimResult result;
   result.kind = request.kind;
   result.tolerances = problem.tolerances();
-  for (int axis : problem.equation_axes()) result.constrained[static_cast<std::size_t>(axis)] = true;
+  for (int axis : problem.equation_axes())
+    result.constrained[static_cast<std::size_t>(axis)] = true;
 
   const bool has_wheels = std::any_of(
       model_.pack().landing_gear.contacts.begin(), model_.pack().landing_gear.contacts.end(),

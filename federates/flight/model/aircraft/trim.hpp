@@ -31,8 +31,8 @@ struct TrimRequest {
   /// Latitude and longitude (rad) and, in flight, the CG height above MSL (m). On the ground
   /// the height follows from the runway elevation and the gear.
   GeodeticPosition position;
-  double heading_rad = 0.0;      ///< true heading of the body x axis
-  double airspeed_mps = 0.0;     ///< true airspeed, or calibrated if airspeed_is_cas
+  double heading_rad = 0.0;   ///< true heading of the body x axis
+  double airspeed_mps = 0.0;  ///< true airspeed, or calibrated if airspeed_is_cas
   bool airspeed_is_cas = false;
   double flight_path_rad = 0.0;  ///< kClimb: air-relative flight-path angle, + climbing
   double bank_rad = 0.0;         ///< kTurn: bank angle, + right wing down (turning right)

@@ -1,9 +1,9 @@
 // Pilot commands: trims add to their primaries, everything is clamped and NaN-safe.
+#include "flight/model/aircraft/aircraft_controls.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "flight/model/aircraft/aircraft_controls.hpp"
 
 namespace fedsim::flight {
 namespace {

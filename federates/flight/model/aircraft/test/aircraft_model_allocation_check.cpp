@@ -87,7 +87,8 @@ TEST(AircraftModelNoAllocation, StepsSetControlsAndOutputsDoNotAllocate) {
           (void)sink;
         }
         EXPECT_EQ(g_allocations.load() - before, 0)
-            << pack << " " << to_string(method) << (earth == EarthModelKind::kFlat ? " flat" : " wgs84");
+            << pack << " " << to_string(method)
+            << (earth == EarthModelKind::kFlat ? " flat" : " wgs84");
         EXPECT_TRUE(std::isfinite(model->outputs().geodetic.alt_m));
         EXPECT_FALSE(model->outputs().numerical_fault);
       }

@@ -17,8 +17,8 @@ AircraftInitialConditions flying(double lat_deg, double lon_deg, double alt_m, d
   AircraftInitialConditions ic;
   ic.position = {lat_deg * kDeg, lon_deg * kDeg, alt_m};
   ic.attitude.psi_rad = heading_deg * kDeg;
-  ic.velocity_mps = speed_mps * Eigen::Vector3d(std::cos(heading_deg * kDeg),
-                                                std::sin(heading_deg * kDeg), 0.0);
+  ic.velocity_mps =
+      speed_mps * Eigen::Vector3d(std::cos(heading_deg * kDeg), std::sin(heading_deg * kDeg), 0.0);
   return ic;
 }
 
@@ -129,7 +129,8 @@ TEST(AircraftModel, AerodynamicMomentsAreMovedFromTheReferencePointToTheCg) {
   model.reset(flying(0.0, 0.0, 1000.0, 0.0, 0.0));
   const AircraftOutputs& o = model.outputs();
   const Eigen::Vector3d drag = o.aero_force_b_n;
-  EXPECT_LT(drag.x(), -0.5);  // 0.9 N: the air blows toward the south: drag on the body points south
+  EXPECT_LT(drag.x(),
+            -0.5);  // 0.9 N: the air blows toward the south: drag on the body points south
   EXPECT_LT((o.total_moment_b_nm - arm.cross(drag)).norm(), 1e-12);
   // Euler's equation at rest: omega' = J^-1 M.
   EXPECT_LT((o.omega_dot_b_rps2 - o.inertia_kgm2.inverse() * arm.cross(drag)).norm(), 1e-12);
@@ -139,8 +140,13 @@ TEST(AircraftModel, EngineAndGearMomentsAreAboutTheCgAndTheTotalsAddUp) {
   auto model = make_model("c172.yaml");
   ASSERT_TRUE(Trim(*model).solve(cruise("c172.yaml")).converged);
   const AircraftOutputs& o = model->outputs();
-  EXPECT_LT((o.total_force_b_n - o.aero_force_b_n - o.propulsion_force_b_n - o.gear_force_b_n).norm(), 1e-9);
-  EXPECT_LT((o.total_moment_b_nm - o.aero_moment_b_nm - o.propulsion_moment_b_nm - o.gear_moment_b_nm).norm(), 1e-9);
+  EXPECT_LT(
+      (o.total_force_b_n - o.aero_force_b_n - o.propulsion_force_b_n - o.gear_force_b_n).norm(),
+      1e-9);
+  EXPECT_LT(
+      (o.total_moment_b_nm - o.aero_moment_b_nm - o.propulsion_moment_b_nm - o.gear_moment_b_nm)
+          .norm(),
+      1e-9);
   // The aero moment about the CG: the coefficients' moment about the reference point plus the
   // force at its arm.
   const Eigen::Vector3d arm = model->pack().geometry.aero_reference_point_m - o.cg_m;
@@ -208,7 +214,7 @@ TEST(AircraftModel, AFailedEngineStopsPushing) {
   model->set_engine_failed(0, false);
   for (int i = 0; i < 1000; ++i) model->step(0.02);
   EXPECT_GT(model->outputs().engines[0].thrust_n, 0.5 * thrust_before);  // relit, spooled up
-  model->set_engine_failed(7, true);  // out of range: ignored
+  model->set_engine_failed(7, true);                                     // out of range: ignored
 }
 
 TEST(AircraftModel, RetractableGearTakesItsTransitTime) {

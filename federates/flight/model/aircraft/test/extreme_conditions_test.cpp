@@ -24,12 +24,18 @@ enum class Scenario {
 
 const char* name_of(Scenario s) {
   switch (s) {
-    case Scenario::kBangBang: return "BangBang";
-    case Scenario::kStall: return "Stall";
-    case Scenario::kInverted: return "Inverted";
-    case Scenario::kZeroAirspeed: return "ZeroAirspeed";
-    case Scenario::kGroundAtSpeed: return "GroundAtSpeed";
-    case Scenario::kVertical: return "Vertical";
+    case Scenario::kBangBang:
+      return "BangBang";
+    case Scenario::kStall:
+      return "Stall";
+    case Scenario::kInverted:
+      return "Inverted";
+    case Scenario::kZeroAirspeed:
+      return "ZeroAirspeed";
+    case Scenario::kGroundAtSpeed:
+      return "GroundAtSpeed";
+    case Scenario::kVertical:
+      return "Vertical";
   }
   return "?";
 }
@@ -73,7 +79,8 @@ TEST_P(ExtremeConditions, NeverNaNNeverADroppedStep) {
   const double speed = cruise_request.airspeed_mps;
   double duration_s = 40.0;
   switch (scenario) {
-    case Scenario::kBangBang: break;
+    case Scenario::kBangBang:
+      break;
     case Scenario::kStall:
       controls.set_throttle(0.0);
       controls.elevator = -1.0;
@@ -144,9 +151,9 @@ INSTANTIATE_TEST_SUITE_P(
                                          IntegrationMethod::kAb3, IntegrationMethod::kAb4,
                                          IntegrationMethod::kRk4),
                        ::testing::Values(50.0, 100.0, 200.0, 400.0),
-                       ::testing::Values(Scenario::kBangBang, Scenario::kStall,
-                                         Scenario::kInverted, Scenario::kZeroAirspeed,
-                                         Scenario::kGroundAtSpeed, Scenario::kVertical)),
+                       ::testing::Values(Scenario::kBangBang, Scenario::kStall, Scenario::kInverted,
+                                         Scenario::kZeroAirspeed, Scenario::kGroundAtSpeed,
+                                         Scenario::kVertical)),
     param_name);
 
 }  // namespace

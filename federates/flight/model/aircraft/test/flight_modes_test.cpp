@@ -86,9 +86,10 @@ TEST_P(LongitudinalModes, DoubletShowsShortPeriodAndPhugoidInTheirBands) {
 
   const Mode& short_period = sp.front();
   const Mode& phugoid = ph.front();
-  std::printf("%s: short period T %.2f s (omega_n %.2f rad/s, zeta %.2f); phugoid T %.1f s (zeta %.3f)\n",
-              b.pack.c_str(), short_period.damped_period_s(), short_period.natural_frequency_radps(),
-              short_period.damping_ratio(), phugoid.damped_period_s(), phugoid.damping_ratio());
+  std::printf(
+      "%s: short period T %.2f s (omega_n %.2f rad/s, zeta %.2f); phugoid T %.1f s (zeta %.3f)\n",
+      b.pack.c_str(), short_period.damped_period_s(), short_period.natural_frequency_radps(),
+      short_period.damping_ratio(), phugoid.damped_period_s(), phugoid.damping_ratio());
   EXPECT_GT(short_period.damped_period_s(), b.short_period_min_s);
   EXPECT_LT(short_period.damped_period_s(), b.short_period_max_s);
   EXPECT_GT(short_period.damping_ratio(), b.short_period_zeta_min);

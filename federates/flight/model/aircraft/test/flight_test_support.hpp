@@ -4,7 +4,6 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>

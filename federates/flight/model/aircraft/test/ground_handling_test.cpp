@@ -66,8 +66,8 @@ Roll landing_roll(const std::string& pack, double speed_mps, double brake, doubl
   const TrimResult parked = model->reposition_to_runway(kRunway);
   EXPECT_TRUE(parked.converged) << parked.reason;
   AircraftInitialConditions ic = parked.initial_conditions;
-  ic.velocity_mps =
-      speed_mps * Eigen::Vector3d(std::cos(kRunway.heading_rad), std::sin(kRunway.heading_rad), 0.0);
+  ic.velocity_mps = speed_mps * Eigen::Vector3d(std::cos(kRunway.heading_rad),
+                                                std::sin(kRunway.heading_rad), 0.0);
   AircraftControls c = parked.controls;
   c.set_throttle(0.0);
   c.brake_left = c.brake_right = brake;

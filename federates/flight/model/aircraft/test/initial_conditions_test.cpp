@@ -1,12 +1,13 @@
 // The initial-condition file: every field read with its unit, and errors that point at the
 // file, line and field.
+#include "flight/model/aircraft/initial_conditions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 #include "common/util/config_node.hpp"
-#include "flight/model/aircraft/initial_conditions.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -105,10 +106,13 @@ TEST(InitialConditionFile, ErrorsNameFileLineAndField) {
   const std::string pos = "position: {lat_deg: 0, lon_deg: 0, alt_m: 100}\n";
   const std::string vel = "velocity_ned_mps: [50, 0, 0]\n";
   // A typo in a key.
-  EXPECT_EQ(error_of(head + pos + vel + "attitude_deg: {phi: 0, thta: 3}\n").rfind("bad.yaml:4:", 0), 0u);
-  EXPECT_NE(error_of(head + pos + vel + "attitude_deg: {phi: 0, thta: 3}\n").find("thta"), std::string::npos);
+  EXPECT_EQ(
+      error_of(head + pos + vel + "attitude_deg: {phi: 0, thta: 3}\n").rfind("bad.yaml:4:", 0), 0u);
+  EXPECT_NE(error_of(head + pos + vel + "attitude_deg: {phi: 0, thta: 3}\n").find("thta"),
+            std::string::npos);
   // Latitude out of range, on line 2.
-  const std::string lat = error_of(head + "position: {lat_deg: 95, lon_deg: 0, alt_m: 100}\n" + vel);
+  const std::string lat =
+      error_of(head + "position: {lat_deg: 95, lon_deg: 0, alt_m: 100}\n" + vel);
   EXPECT_EQ(lat.rfind("bad.yaml:2: position.lat_deg:", 0), 0u) << lat;
   // Both altitude keys.
   EXPECT_NE(error_of(head + "position: {lat_deg: 0, lon_deg: 0, alt_m: 1, alt_ft: 3}\n" + vel)
@@ -119,14 +123,17 @@ TEST(InitialConditionFile, ErrorsNameFileLineAndField) {
   // A throttle above 1, a wrong turbulence word, wind layers out of order.
   EXPECT_NE(error_of(head + pos + vel + "controls: {throttle: 1.5}\n").find("controls.throttle"),
             std::string::npos);
-  EXPECT_NE(error_of(head + pos + vel + "weather: {turbulence: strong}\n").find("weather.turbulence"),
-            std::string::npos);
-  const std::string wind = error_of(head + pos + vel +
-                                    "weather:\n  wind:\n    - {alt_m: 100, speed_mps: 1, from_deg: 0}\n"
-                                    "    - {alt_m: 50, speed_mps: 1, from_deg: 0}\n");
+  EXPECT_NE(
+      error_of(head + pos + vel + "weather: {turbulence: strong}\n").find("weather.turbulence"),
+      std::string::npos);
+  const std::string wind =
+      error_of(head + pos + vel +
+               "weather:\n  wind:\n    - {alt_m: 100, speed_mps: 1, from_deg: 0}\n"
+               "    - {alt_m: 50, speed_mps: 1, from_deg: 0}\n");
   EXPECT_EQ(wind.rfind("bad.yaml:7: weather.wind[1].alt_m:", 0), 0u) << wind;
   // A wrong format version and a missing file.
-  EXPECT_NE(error_of("fedsim_initial_conditions: 2\n" + pos + vel).find("version"), std::string::npos);
+  EXPECT_NE(error_of("fedsim_initial_conditions: 2\n" + pos + vel).find("version"),
+            std::string::npos);
   EXPECT_THROW(load_initial_condition_file("/nonexistent/ic.yaml"), util::ConfigError);
 }
 

@@ -113,7 +113,8 @@ Excursions fly_hands_off(AircraftModel& model, double duration_s, double rate_hz
     model.step(1.0 / rate_hz);
     const AircraftOutputs& o = model.outputs();
     e.altitude_m = std::max(e.altitude_m, std::abs(o.geodetic.alt_m - start.geodetic.alt_m));
-    e.heading_rad = std::max(e.heading_rad, std::abs(wrap_pi(o.euler.psi_rad - start.euler.psi_rad)));
+    e.heading_rad =
+        std::max(e.heading_rad, std::abs(wrap_pi(o.euler.psi_rad - start.euler.psi_rad)));
     e.airspeed_mps = std::max(e.airspeed_mps, std::abs(o.tas_mps - start.tas_mps));
   }
   return e;
@@ -188,7 +189,9 @@ TEST(TrimFails, ThrottleSaturatedSaysWhyAndByHowMuch) {
   r.airspeed_mps = 160.0 * kKt;
   const TrimResult t = Trim(*model).solve(r);
   EXPECT_FALSE(t.converged);
-  EXPECT_EQ(t.reason.rfind("throttle saturated at 1.0: the aircraft cannot hold 4000 ft at 160 KTAS", 0), 0u)
+  EXPECT_EQ(
+      t.reason.rfind("throttle saturated at 1.0: the aircraft cannot hold 4000 ft at 160 KTAS", 0),
+      0u)
       << t.reason;
   EXPECT_NE(t.reason.find("u_dot_mps2 -"), std::string::npos) << t.reason;  // decelerating
   EXPECT_LT(t.residuals[kUDot], -0.1);
@@ -216,7 +219,8 @@ TEST(TrimFails, DescentTooSteepForIdle) {
   r.flight_path_rad = -10.0 * kDeg;
   const TrimResult t = Trim(*model).solve(r);
   EXPECT_FALSE(t.converged);
-  EXPECT_EQ(t.reason.rfind("throttle saturated at idle: the aircraft cannot descend at 10.0 deg", 0), 0u)
+  EXPECT_EQ(
+      t.reason.rfind("throttle saturated at idle: the aircraft cannot descend at 10.0 deg", 0), 0u)
       << t.reason;
 }
 
