@@ -113,8 +113,7 @@ int main(int argc, char** argv) {
     engine.aircraft_id(static_cast<uint16_t>(o.aircraft_id));
     return federate.run([&](const runtime::FrameContext& ctx) {
       if (ctx.resetting()) {
-        model->reset(start.initial);
-        model->set_controls(start.controls);
+        model->reset(start.initial, start.controls);
       } else if (ctx.running()) {
         if (controls_sub.latest_before(ctx.frame, pilot)) {
           model->set_controls(flight::controls_from_message(pilot, mode, start.controls));

@@ -38,8 +38,7 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
     if (file.runway_elevation_m) model.set_runway_elevation_m(*file.runway_elevation_m);
     if (o.runway_elevation_m) model.set_runway_elevation_m(*o.runway_elevation_m);
     model.set_weather(file.weather);
-    model.reset(file.initial);
-    model.set_controls(file.controls);
+    model.reset(file.initial, file.controls);  // engines and surfaces settle for these controls
     start.initial = file.initial;
     start.controls = file.controls;
     return start;

@@ -49,11 +49,6 @@ Prepared prepare(const FlyOptions& o) {
                                             model_options(o));
   if (!o.inputs.empty()) p.profile = io::InputProfile::load_file(o.inputs);
   p.start = establish_start(o.start, *p.model);
-  if (!p.start.trim) {
-    // From an IC file: start again with its controls in place, so that the surfaces stand
-    // where they point and the engines settle at the file's throttles.
-    p.model->reset(p.start.initial, p.start.controls);
-  }
   if (!o.turbulence.empty()) {
     WeatherSettings weather = p.model->weather();
     weather.turbulence = severity_named(o.turbulence);

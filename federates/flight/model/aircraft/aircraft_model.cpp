@@ -19,24 +19,6 @@ namespace {
 constexpr double kG0 = 9.80665;
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kFeetToMetres = 0.3048;
-/// Quaternion constraint gain as k h (seed eqs 3.67-3.70: k h <= 1). The correction
-/// k (1 - |q|^2) q pulls the norm back at the rate 2k, an eigenvalue -2 k h per step, which must
-/// lie inside the method's stability interval on the negative real axis: (-2, 0) for Euler,
-/// (-2.79, 0) for RK4, but only (-1, 0), (-6/11, 0) and (-3/10, 0) for Adams-Bashforth 2, 3
-/// and 4 (Hairer & Wanner, Solving ODEs II, fig. V.1.1); AB4 with k h = 0.5 diverges.
-double quaternion_constraint_kh(IntegrationMethod method) {
-  switch (method) {
-    case IntegrationMethod::kEuler:
-    case IntegrationMethod::kRk4:
-      return 0.5;
-    case IntegrationMethod::kAb2:
-      return 0.25;
-    case IntegrationMethod::kAb3:
-    case IntegrationMethod::kAb4:
-      return 0.1;
-  }
-  return 0.1;
-}
 /// The equations of motion take new mass properties when the mass has changed by this
 /// fraction: a fuel-burn step changes it by ~1e-7, and each update validates the tensor (an
 /// eigen-decomposition). The CG used for the moment arms is always the current one.
@@ -706,7 +688,7 @@ void AircraftModel::integrate_body(double dt_s) {
   // 9. Equations of motion: the first derivative is the present evaluation's; the integrator's
   // trial states re-evaluate the force chain (held engines and actuators).
   const double correction = RigidBodyDynamics::quaternion_correction_per_s(
-      x_, quaternion_constraint_kh(integrator_.method()), dt_s);
+      x_, RigidBodyDynamics::stable_quaternion_constraint_kh(integrator_.method()), dt_s);
   const RigidBodyDynamics::StateVector f0 = dynamics_.derivative(x_, current_->wrench, correction);
   auto derivative = [this, correction](double, const RigidBodyDynamics::StateVector& x) {
     evaluate(RigidBodyDynamics::unpack(x), *trial_, false);

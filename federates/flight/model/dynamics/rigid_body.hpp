@@ -5,13 +5,16 @@
 #include "flight/model/dynamics/rigid_body_dynamics.hpp"
 #include "flight/model/math/integrator.hpp"
 
+#include <optional>
+
 namespace fedsim::flight {
 
 struct RigidBodyConfig {
   EarthModelConfig earth;
   IntegrationMethod method = IntegrationMethod::kRk4;
-  /// Gain of the quaternion algebraic constraint as k h (seed eqs 3.67-3.70 need k h <= 1).
-  double quaternion_constraint_kh = 0.5;
+  /// Gain of the quaternion algebraic constraint as k h (seed eqs 3.67-3.70 need k h <= 1);
+  /// unset: the largest stable gain for the integration method.
+  std::optional<double> quaternion_constraint_kh;
 };
 
 /// Owns the state and advances it frame by frame. Neither step() nor outputs() allocates.
@@ -41,7 +44,7 @@ class RigidBody {
  private:
   RigidBodyDynamics dynamics_;
   Integrator<RigidBodyDynamics::kStateSize> integrator_;
-  double quaternion_constraint_kh_;
+  std::optional<double> quaternion_constraint_kh_;
   RigidBodyDynamics::StateVector x_;
   double t_s_ = 0.0;
 };

@@ -120,4 +120,18 @@ Eigen::Vector3d RigidBodyDynamics::specific_force_at_b(const RigidBodyAccelerati
          omega_b_rps.cross(omega_b_rps.cross(point_from_cg_b_m));
 }
 
+double RigidBodyDynamics::stable_quaternion_constraint_kh(IntegrationMethod method) {
+  switch (method) {
+    case IntegrationMethod::kEuler:
+    case IntegrationMethod::kRk4:
+      return 0.5;
+    case IntegrationMethod::kAb2:
+      return 0.25;
+    case IntegrationMethod::kAb3:
+    case IntegrationMethod::kAb4:
+      return 0.1;
+  }
+  return 0.1;
+}
+
 }  // namespace fedsim::flight

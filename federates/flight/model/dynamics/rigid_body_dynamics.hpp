@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include "flight/model/math/integration_method.hpp"
 #include "flight/model/dynamics/earth_model.hpp"
 #include "flight/model/dynamics/mass_properties.hpp"
 #include "flight/model/dynamics/rigid_body_state.hpp"
@@ -70,6 +71,13 @@ class RigidBodyDynamics {
   StateVector derivative(const StateVector& x, const Wrench& wrench,
                          double quaternion_correction_per_s) const;
   /// k lambda for the state at the start of a step of length h (seed: k h <= 1).
+  /// The largest stable quaternion-constraint gain k h for an integration method. The
+  /// correction k (1 - |q|^2) q pulls the norm back at the rate 2k, an eigenvalue -2 k h per
+  /// step, which must lie inside the method's stability interval on the negative real axis:
+  /// (-2, 0) for Euler, (-2.79, 0) for RK4, but only (-1, 0), (-6/11, 0) and (-3/10, 0) for
+  /// Adams-Bashforth 2, 3 and 4; with k h = 0.5 an AB4 run diverges within a second.
+  static double stable_quaternion_constraint_kh(IntegrationMethod method);
+
   static double quaternion_correction_per_s(const StateVector& x, double constraint_kh,
                                             double step_s);
 

@@ -76,6 +76,29 @@ TEST(RigidBody, QuaternionNormHeldOverLongTumble) {
             << ", without " << without_constraint << "\n";
 }
 
+// With the default (per-method) constraint gain every integrator keeps |q| = 1: a gain of 0.5
+// is outside the real stability interval of AB3 and AB4 and made them diverge.
+TEST(RigidBody, QuaternionNormHeldByEveryIntegratorWithItsDefaultGain) {
+  for (const auto method : {IntegrationMethod::kEuler, IntegrationMethod::kRk4,
+                            IntegrationMethod::kAb2, IntegrationMethod::kAb3,
+                            IntegrationMethod::kAb4}) {
+    RigidBody body(flat_config(method), tumbler());
+    InitialConditions ic = tumbling_start();
+    ic.omega_b_rps = {3.0, -5.0, 4.0};
+    body.reset(ic);
+    NoForces none;
+    double worst = 0.0;
+    for (int i = 0; i < 2000; ++i) {  // 20 s
+      body.step(0.01, 1, none);
+      worst = std::max(worst, std::abs(body.state().attitude.norm() - 1.0));
+    }
+    // Bounded, not diverging (before the fix: |q| 1.149 with AB3, NaN with AB4). Euler's own
+    // growth of |q| per step, (omega h / 2)^2 / 2, is what leaves it at a few 1e-3 here.
+    EXPECT_LT(worst, method == IntegrationMethod::kEuler ? 1e-2 : 1e-4)
+        << "method " << static_cast<int>(method);
+  }
+}
+
 TEST(RigidBody, TorqueFreeBodyConservesMomentumAndEnergy) {
   RigidBody body(flat_config(), tumbler());
   body.reset(tumbling_start());
