@@ -26,7 +26,7 @@ struct FlightOptions {
   std::string aircraft;
   flight::StartOptions start;
   std::string earth = "flat";
-  std::string integrator = "ab2";
+  std::string integrator = "rk4";  // AB2 at 50 Hz is too close to its stability limit with stiff gear
   int substeps = 1;
   std::uint64_t seed = 1;
   std::string controls_mode = "absolute";
