@@ -142,10 +142,8 @@ void Federate::step_pending_locked(bool forced) {
     step_(ctx);
   } catch (const std::exception& e) {
     log_->error("frame={} step failed: {}", ctx.frame, e.what());
-    exit_code_.store(1);
-    stop_reason_ = std::string("step failed: ") + e.what();
-    stop_requested_.store(true);
     stopping_ = true;
+    fail(std::string("step failed: ") + e.what());
     return;
   }
   const std::uint64_t compute_ns = util::monotonic_ns() - start_ns;
@@ -160,8 +158,7 @@ void Federate::step_pending_locked(bool forced) {
   last_latency_ns_ = latency_ns;
   publish_done_locked(ctx.frame, last_compute_us_, latency_ns);
   if (options_.max_frames != 0 && stats_.frames >= options_.max_frames) {
-    stop_reason_ = "stepped " + std::to_string(stats_.frames) + " frames";
-    stop_requested_.store(true);
+    stop("stepped " + std::to_string(stats_.frames) + " frames");
   }
 }
 
