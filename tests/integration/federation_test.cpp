@@ -68,6 +68,15 @@ std::unique_ptr<ChildProcess> start(const std::string& dir, const std::string& n
   return std::make_unique<ChildProcess>(argv, dir + "/" + name + ".log");
 }
 
+/// The test's own DDS participant on a federation's domain (it plays the instructor).
+std::shared_ptr<runtime::DdsParticipant> instructor_participant(int domain) {
+  runtime::ParticipantOptions o;
+  o.name = "test-instructor";
+  o.domain_id = domain;
+  o.qos_file = runtime::default_qos_file();
+  return runtime::DdsParticipant::create(o);
+}
+
 void send_run_state(runtime::Publisher<msg::SimCommand>& pub, msg::RunState state, std::uint32_t seq) {
   msg::SimCommand cmd;
   cmd.kind(msg::COMMAND_RUN_STATE);
@@ -85,11 +94,7 @@ TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "lockstep", "--rate", "100", "--scale", "1", "--expect", "a,b",
                        "--frames", "400", "--shutdown-on-exit"});
-  runtime::ParticipantOptions o;
-  o.name = "test-instructor";
-  o.domain_id = domain;
-  o.qos_file = runtime::default_qos_file();
-  auto dds = runtime::DdsParticipant::create(o);
+  auto dds = instructor_participant(domain);
   runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
   ASSERT_TRUE(commands.wait_for_readers(3, std::chrono::seconds(10)));  // timing, a, b
   // Wait for the run to start (a's trace grows), then freeze, run, reset.
@@ -322,11 +327,7 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "lockstep", "--rate", "50", "--scale", "2", "--expect", "flight",
                        "--frames", "3000", "--shutdown-on-exit"});
-  runtime::ParticipantOptions o;
-  o.name = "test-instructor";
-  o.domain_id = domain;
-  o.qos_file = runtime::default_qos_file();
-  auto dds = runtime::DdsParticipant::create(o);
+  auto dds = instructor_participant(domain);
   runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
   runtime::Subscription<msg::AircraftState> state_sub(dds, msg::TOPIC_AIRCRAFT_STATE, "state");
   runtime::Subscription<msg::EngineState> engine_sub(dds, msg::TOPIC_ENGINE_STATE, "state");

@@ -96,9 +96,12 @@ int main(int argc, char** argv) {
                                                                  "lockstep_data", true);
     auto& state_pub = federate.publish<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, o.state_qos);
     auto& engine_pub = federate.publish<msg::EngineState>(msg::TOPIC_ENGINE_STATE, "state");
+    // Relative controls fly about the latest trim: the start's, or a reposition's.
+    flight::AircraftControls trim_base = start.controls;
     federate.on_command([&](const msg::SimCommand& command) {
       try {
         const std::string what = flight::apply_command(command, *model, runways);
+        if (command.kind() == msg::COMMAND_REPOSITION) trim_base = model->controls();
         if (!what.empty()) log.info("command seq={} from={}: {}", command.sequence_number(),
                                     command.issuer().to_string(), what);
       } catch (const std::exception& e) {
@@ -114,9 +117,10 @@ int main(int argc, char** argv) {
     return federate.run([&](const runtime::FrameContext& ctx) {
       if (ctx.resetting()) {
         model->reset(start.initial, start.controls);
+        trim_base = start.controls;
       } else if (ctx.running()) {
         if (controls_sub.latest_before(ctx.frame, pilot)) {
-          model->set_controls(flight::controls_from_message(pilot, mode, start.controls));
+          model->set_controls(flight::controls_from_message(pilot, mode, trim_base));
         }
         model->step(ctx.dt_s);
       }
