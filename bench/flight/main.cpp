@@ -19,28 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// Counting allocator (as the model tests): GCC cannot tell that malloc/free pair up here.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace fedsim::flight;
 using json = nlohmann::json;
@@ -98,7 +79,7 @@ Figure measure(const Aircraft& a, IntegrationMethod method, double rate_hz, cons
   best.us_per_step = 1e300;
   for (int r = 0; r < o.repeats; ++r) {
     model.reset(start, trim.controls);
-    const long allocations_before = g_allocations.load();
+    const fedsim::util::AllocationScope allocations;
     const auto t0 = std::chrono::steady_clock::now();
     for (long i = 0; i < steps; ++i) model.step(dt);
     const double wall_s =
@@ -110,7 +91,7 @@ Figure measure(const Aircraft& a, IntegrationMethod method, double rate_hz, cons
       best.realtime_factor = best.steps_per_s / rate_hz;
     }
     best.allocations_per_step = std::max(
-        best.allocations_per_step, static_cast<double>(g_allocations.load() - allocations_before) /
+        best.allocations_per_step, static_cast<double>(allocations.allocations()) /
                                        static_cast<double>(steps));
     best.altitude_change_m = model.outputs().geodetic.alt_m - start.position.alt_m;
   }

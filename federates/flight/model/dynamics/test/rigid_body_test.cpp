@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "../../math/test/allocation_counter.hpp"
+#include "common/util/allocation_counter.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -249,7 +249,7 @@ TEST(RigidBody, StepDoesNotAllocate) {
     RigidBody body(config, tumbler());
     body.reset(tumbling_start());
     NoForces none;
-    const testing::AllocationScope scope;
+    const util::AllocationScope scope;
     for (int i = 0; i < 100; ++i) {
       body.step(0.02, 2, none);
       const RigidBodyOutputs out = body.outputs();

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "allocation_counter.hpp"
+#include "common/util/allocation_counter.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -121,7 +121,7 @@ TEST(Integrator, StepsDoNotAllocate) {
                                    IntegrationMethod::kAb2, IntegrationMethod::kAb4}) {
     Integrator<13> integrator(method);
     State y = State::Ones();
-    const testing::AllocationScope scope;
+    const util::AllocationScope scope;
     for (int i = 0; i < 100; ++i) integrator.step(i * 0.01, 0.01, y, f);
     integrator.restart();
     integrator.step_frame(1.0, 0.02, 2, y, f);

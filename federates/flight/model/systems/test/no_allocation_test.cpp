@@ -1,5 +1,5 @@
 // Checks that the per-step functions of the systems and weather models never allocate: the
-// global operator new is replaced (for this test executable) by a counting one.
+// global operator new is replaced by the counting one of fedsim_allocation_counter.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,34 +8,13 @@
 #include <new>
 #include <vector>
 
+#include "common/util/allocation_counter.hpp"
 #include "flight/model/environment/turbulence.hpp"
 #include "flight/model/environment/wind_profile.hpp"
 #include "flight/model/environment/wind_shear.hpp"
 #include "flight/model/systems/actuator.hpp"
 #include "flight/model/systems/test/reference_data.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// GCC cannot tell that these replacements pair malloc with free, and warns where it inlines
-// them; the pairing is correct by construction.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace fedsim::flight {
 namespace {
@@ -79,7 +58,7 @@ TEST(NoAllocation, ModelStepsDoNotAllocate) {
   Turbulence::Inputs turb_in;
   turb_in.tas_mps = 60.0;
 
-  const long before = g_allocations.load();
+  const util::AllocationScope scope;
   double sink = 0.0;
   for (int i = 0; i < 200; ++i) {
     actuator.step(0.02, {i % 2 == 0 ? 1.0 : -1.0});
@@ -91,14 +70,14 @@ TEST(NoAllocation, ModelStepsDoNotAllocate) {
     turbulence.step(0.02, turb_in);
     sink += wind.at(5.0 * i).wind_ned_mps.norm() + shear.wind_ned_mps(100.0 * i, 0.0, 50.0).norm();
   }
-  const long after = g_allocations.load();
-  EXPECT_EQ(after, before);
+  const std::size_t after = scope.allocations();
+  EXPECT_EQ(after, 0u);
   // The counter does see allocations (the check above could fail).
   {
     const std::vector<double> probe(10, 1.0);
     sink += probe.back();
   }
-  EXPECT_GT(g_allocations.load(), after);
+  EXPECT_GT(scope.allocations(), after);
   EXPECT_TRUE(std::isfinite(sink));
 }
 
