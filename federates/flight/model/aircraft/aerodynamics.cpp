@@ -19,7 +19,10 @@ Aerodynamics::Aerodynamics(const AircraftPack& pack)
 
 Aerodynamics::Aerodynamics(const AeroModelSpec& model, const ReferenceGeometry& geometry,
                            double flap_full_travel_rad)
-    : model_(model), geometry_(geometry), flap_full_travel_deg_(flap_full_travel_rad * kRadToDeg) {
+    : model_(model),
+      geometry_(geometry),
+      flap_full_travel_deg_(flap_full_travel_rad * kRadToDeg),
+      envelope_(model_) {
   if (model_.factors.size() > AeroModelSpec::kMaxFactors) {
     throw std::invalid_argument("Aerodynamics: too many factors");
   }
@@ -41,7 +44,8 @@ Eigen::Matrix3d Aerodynamics::wind_to_body(double alpha_rad, double beta_rad) {
   return m;
 }
 
-void Aerodynamics::fill_variables(const Inputs& in, bool stall_hysteresis, Slots& s) const {
+void Aerodynamics::fill_variables(const Inputs& in, double alpha_rad, double beta_rad,
+                                  bool stall_hysteresis, Slots& s) const {
   auto set = [&s](AeroVariable v, double value) { s[slot_of(v)] = value; };
   const double b = geometry_.wing_span_m;
   const double c = geometry_.mean_chord_m;
@@ -50,10 +54,10 @@ void Aerodynamics::fill_variables(const Inputs& in, bool stall_hysteresis, Slots
   const double b_2v = moving ? b / (2.0 * in.tas_mps) : 0.0;
   const double c_2v = moving ? c / (2.0 * in.tas_mps) : 0.0;
 
-  set(AeroVariable::alpha_rad, in.alpha_rad);
-  set(AeroVariable::abs_alpha_rad, std::abs(in.alpha_rad));
-  set(AeroVariable::beta_rad, in.beta_rad);
-  set(AeroVariable::abs_beta_rad, std::abs(in.beta_rad));
+  set(AeroVariable::alpha_rad, alpha_rad);
+  set(AeroVariable::abs_alpha_rad, std::abs(alpha_rad));
+  set(AeroVariable::beta_rad, beta_rad);
+  set(AeroVariable::abs_beta_rad, std::abs(beta_rad));
   set(AeroVariable::mach, in.mach);
   set(AeroVariable::qbar_pa, in.qbar_pa);
   set(AeroVariable::p_hat, in.omega_air_b.x() * b_2v);
@@ -89,17 +93,18 @@ double Aerodynamics::sum_axis(AeroAxis axis, const Slots& slots) const {
 
 Aerodynamics::Outputs Aerodynamics::evaluate(const Inputs& in) {
   if (model_.stall_hysteresis) {
-    if (in.alpha_rad > model_.stall_hysteresis->alpha_set_rad) stalled_ = true;
-    if (in.alpha_rad < model_.stall_hysteresis->alpha_clear_rad) stalled_ = false;
+    // A flow from behind (alpha near +-180 deg) is not a stall of the wing.
+    const double alpha = AeroFlowEnvelope::forward_equivalent_alpha(in.alpha_rad);
+    if (alpha > model_.stall_hysteresis->alpha_set_rad) stalled_ = true;
+    if (alpha < model_.stall_hysteresis->alpha_clear_rad) stalled_ = false;
   }
   return compute(in, stalled_);
 }
 
-Aerodynamics::Outputs Aerodynamics::compute(const Inputs& in, bool stall_hysteresis) const {
+void Aerodynamics::sum_coefficients(const Inputs& in, double alpha_rad, double beta_rad,
+                                    bool stall_hysteresis, Outputs& out) const {
   Slots slots{};
-  fill_variables(in, stall_hysteresis, slots);
-  Outputs out;
-  out.stall_hysteresis = stall_hysteresis;
+  fill_variables(in, alpha_rad, beta_rad, stall_hysteresis, slots);
   out.CL = sum_axis(AeroAxis::lift, slots);
   slots[slot_of(AeroVariable::cl_squared)] = out.CL * out.CL;
   out.CD = sum_axis(AeroAxis::drag, slots);
@@ -107,6 +112,36 @@ Aerodynamics::Outputs Aerodynamics::compute(const Inputs& in, bool stall_hystere
   out.Cl = sum_axis(AeroAxis::roll_moment, slots);
   out.Cm = sum_axis(AeroAxis::pitch_moment, slots);
   out.Cn = sum_axis(AeroAxis::yaw_moment, slots);
+}
+
+void Aerodynamics::blend_separated_flow(const Inputs& in, bool stall_hysteresis, double w,
+                                        Outputs& out) const {
+  // Separated flow: no lift and no side force (their wind axes lose meaning as the flow turns
+  // along the span or comes from behind), the pack's drag along the flow, and the pack's
+  // moments (weathercock, pitch stiffness, damping), all at the wing-plane incidence: about
+  // the head-on values for a tailwind or a crosswind, the edge of the data in a flat fall.
+  Outputs separated;
+  const double incidence = AeroFlowEnvelope::wing_plane_incidence(in.alpha_rad, in.beta_rad);
+  sum_coefficients(in, envelope_.limited_alpha(incidence), envelope_.limited_beta(in.beta_rad),
+                   stall_hysteresis, separated);
+  const double s = 1.0 - w;
+  out.CL *= w;
+  out.CY *= w;
+  out.CD = w * out.CD + s * separated.CD;
+  out.Cl = w * out.Cl + s * separated.Cl;
+  out.Cm = w * out.Cm + s * separated.Cm;
+  out.Cn = w * out.Cn + s * separated.Cn;
+}
+
+Aerodynamics::Outputs Aerodynamics::compute(const Inputs& in, bool stall_hysteresis) const {
+  Outputs out;
+  out.stall_hysteresis = stall_hysteresis;
+  sum_coefficients(in, envelope_.limited_alpha(in.alpha_rad), envelope_.limited_beta(in.beta_rad),
+                   stall_hysteresis, out);
+  out.attached_weight = envelope_.attached_weight(in.alpha_rad, in.beta_rad);
+  if (out.attached_weight < 1.0) {
+    blend_separated_flow(in, stall_hysteresis, out.attached_weight, out);
+  }
 
   const double qbar_s = in.qbar_pa * geometry_.wing_area_m2;
   out.lift_n = qbar_s * out.CL;

@@ -42,6 +42,9 @@ namespace fedsim::flight {
 /// of the step, while the forces are re-evaluated at every derivative evaluation of the
 /// integrator (four times per RK4 step) from the trial state: air data, aerodynamics and
 /// ground reactions follow the trial state, the engines' and actuators' outputs are held.
+/// Before each integration step the gear is told what the integrator carries at that step
+/// (stable_ground_contact: a floor on its friction band, ceilings on its strut dampers, from
+/// the contact points' effective masses and the method's stability limit).
 /// Forces and moments are moved to the CG once: aerodynamics from the aero reference point,
 /// engines and gear from the pack datum. Aerodynamic rates are relative to the air mass:
 /// body rates minus the earth's rate minus the turbulence gust rates (Etkin).
@@ -200,6 +203,12 @@ class AircraftModel {
   void fill_engine_outputs();
   void fill_contact_outputs();
   void update_mass_properties(bool force);
+  void update_contact_inverse_masses();
+  /// Sets the friction-band floor and the strut-damping ceilings that the integrator carries
+  /// at this step with the present wheel loads (a C172 with its brakes set chattered with AB2
+  /// at 50 Hz: the gear's 0.25 m/s band and its nose strut's rebound damping were past the
+  /// method's stability limit).
+  void stable_ground_contact(double step_s);
   bool state_is_sound() const;
   bool evaluation_is_finite() const;
   void pin_origin(const GeodeticPosition& at);
@@ -232,6 +241,11 @@ class AircraftModel {
 
   // Scratch sized at construction so that a step never allocates.
   std::vector<LandingGear::ContactKinematics> contact_kinematics_;
+  // Ground-contact conditioning for the integrator (stable_ground_contact), held over a step.
+  std::vector<double> contact_inverse_mass_horizontal_;  // 1/m_eff of each contact point, 1/kg
+  std::vector<double> contact_inverse_mass_vertical_;
+  std::vector<double> contact_damping_ceiling_nspm_;
+  double friction_band_floor_mps_ = 0.0;
   std::vector<double> fuel_flows_kgps_;
   std::unique_ptr<Evaluation> current_;  // evaluation at the present state
   std::unique_ptr<Evaluation> trial_;    // scratch for the integrator's trial states

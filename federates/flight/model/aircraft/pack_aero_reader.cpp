@@ -96,9 +96,9 @@ AeroLookup read_lookup_table(const ConfigNode& table_node, const NameScope& scop
                                Table2D(std::move(t.breakpoints[0]), std::move(t.breakpoints[1]),
                                        std::move(t.values)));
     default:
-      return AeroLookup::table(slots[0], slots[1], slots[2],
-                               Table3D(std::move(t.breakpoints[0]), std::move(t.breakpoints[1]),
-                                       std::move(t.breakpoints[2]), std::move(t.values)));
+      return AeroLookup::table(slots[0], slots[1], slots[2], std::move(t.breakpoints[0]),
+                               std::move(t.breakpoints[1]), std::move(t.breakpoints[2]),
+                               std::move(t.values));
   }
 }
 

@@ -109,42 +109,50 @@ double LandingGear::brake_for(const Contact& contact, const Inputs& in) const {
   return 0.0;
 }
 
+double LandingGear::blend_speed_mps(const Inputs& in) const {
+  const double floor = std::isfinite(in.min_friction_blend_speed_mps)
+                           ? in.min_friction_blend_speed_mps
+                           : 0.0;
+  return std::max(params_.friction_blend_speed_mps, floor);
+}
+
 Eigen::Vector3d LandingGear::wheel_friction_ned(const Contact& contact,
                                                 const Eigen::Vector3d& velocity_ned,
                                                 const Eigen::Matrix3d& dcm_ned_to_body,
-                                                double steer_rad, double brake,
-                                                double normal_n) const {
+                                                double steer_rad, double brake, double normal_n,
+                                                double band_mps) const {
   const GroundAxes axes = wheel_ground_axes(dcm_ned_to_body, steer_rad);
   const double v_roll = velocity_ned.dot(axes.along);
   const double v_side = velocity_ned.dot(axes.right);
-  const double band = params_.friction_blend_speed_mps;
 
   const double mu_roll = contact.rolling_friction * (1.0 - brake) + contact.static_friction * brake;
-  const double f_roll = -std::copysign(mu_roll * normal_n * blend(v_roll, band), v_roll);
+  const double f_roll = -std::copysign(mu_roll * normal_n * blend(v_roll, band_mps), v_roll);
 
+  // The slip-angle law's slope, mu N / (slip_sat |v_roll|) per m/s of side speed, grows without
+  // bound as the wheel stops rolling; near a standstill the side friction is held to the
+  // viscous band instead (the same slope as along the wheel), which an explicit integrator
+  // carries. Above |v_roll| = band / slip_sat (1.4 m/s) the slip-angle law governs alone.
   const double slip_rad = std::atan2(v_side, std::abs(v_roll));
-  const double side_fraction =
-      std::min(std::abs(slip_rad) / contact.cornering_saturation_slip_rad, 1.0);
-  const double ground_speed = std::hypot(v_roll, v_side);
-  const double f_side = -std::copysign(
-      contact.dynamic_friction * side_fraction * normal_n * blend(ground_speed, band), v_side);
+  const double side_fraction = std::min(
+      std::abs(slip_rad) / contact.cornering_saturation_slip_rad, blend(v_side, band_mps));
+  const double f_side = -std::copysign(contact.dynamic_friction * side_fraction * normal_n, v_side);
 
   return f_roll * axes.along + f_side * axes.right;
 }
 
 Eigen::Vector3d LandingGear::sliding_friction_ned(const Contact& contact,
                                                   const Eigen::Vector3d& velocity_ned,
-                                                  double normal_n) const {
+                                                  double normal_n, double band_mps) const {
   const Eigen::Vector3d v_ground(velocity_ned.x(), velocity_ned.y(), 0.0);
   const double speed = v_ground.norm();
   // mu N v / max(|v|, band): Coulomb outside the band, viscous inside.
-  return -contact.dynamic_friction * normal_n * v_ground /
-         std::max(speed, params_.friction_blend_speed_mps);
+  return -contact.dynamic_friction * normal_n * v_ground / std::max(speed, band_mps);
 }
 
-LandingGear::ContactOutput LandingGear::evaluate_contact(const Contact& contact,
+LandingGear::ContactOutput LandingGear::evaluate_contact(std::size_t index,
                                                          const ContactKinematics& kin,
                                                          const Inputs& in) const {
+  const Contact& contact = params_.contacts[index];
   ContactOutput out;
   const bool wheel = contact.type == ContactType::kWheel;
   const bool deployed = !wheel || !contact.retractable || in.gear_down;
@@ -156,16 +164,21 @@ LandingGear::ContactOutput LandingGear::evaluate_contact(const Contact& contact,
     return out;
   }
   out.in_contact = true;
-  const double damping = out.compression_rate_mps >= 0.0 ? contact.damping_compression_nspm
-                                                         : contact.damping_rebound_nspm;
+  double damping = out.compression_rate_mps >= 0.0 ? contact.damping_compression_nspm
+                                                   : contact.damping_rebound_nspm;
+  if (index < in.max_damping_nspm.size() && in.max_damping_nspm[index] >= 0.0) {
+    damping = std::min(damping, in.max_damping_nspm[index]);
+  }
   out.normal_force_n =
       std::max(contact.spring_npm * out.compression_m + damping * out.compression_rate_mps, 0.0);
   out.steer_angle_rad = wheel ? clamp_or_zero(in.steering, -1.0, 1.0) * contact.max_steer_rad : 0.0;
 
+  const double band = blend_speed_mps(in);
   Eigen::Vector3d friction_ned =
       wheel ? wheel_friction_ned(contact, kin.velocity_ned_mps, in.dcm_ned_to_body,
-                                 out.steer_angle_rad, brake_for(contact, in), out.normal_force_n)
-            : sliding_friction_ned(contact, kin.velocity_ned_mps, out.normal_force_n);
+                                 out.steer_angle_rad, brake_for(contact, in), out.normal_force_n,
+                                 band)
+            : sliding_friction_ned(contact, kin.velocity_ned_mps, out.normal_force_n, band);
   const double limit = contact.static_friction * out.normal_force_n;
   const double magnitude = friction_ned.norm();
   if (magnitude > limit) friction_ned *= limit / magnitude;  // friction circle
@@ -187,7 +200,7 @@ void LandingGear::step(double /*dt_s*/, const Inputs& in) {
   for (std::size_t i = 0; i < params_.contacts.size(); ++i) {
     const Contact& contact = params_.contacts[i];
     ContactOutput& c = out.contacts[i];
-    c = evaluate_contact(contact, in.contacts[i], in);
+    c = evaluate_contact(i, in.contacts[i], in);
     if (!c.in_contact) continue;
     // The force acts where the tyre meets the ground: the undeflected point moved up by the
     // compression along the ground normal.

@@ -26,20 +26,26 @@ namespace fedsim::flight {
 ///  - compression d = runway elevation - altitude of the undeflected contact point; in
 ///    contact while d > 0 (retractable wheels only with the gear down);
 ///  - normal force N = max(0, k d + c d'), with c the compression damping while d' >= 0 and
-///    the rebound damping otherwise; the ground can push, never pull; N acts along the ground
-///    normal (up) at the tyre's ground point;
+///    the rebound damping otherwise (either held to Inputs::max_damping_nspm, the ceiling an
+///    executive sets for its integrator); the ground can push, never pull; N acts along the
+///    ground normal (up) at the tyre's ground point;
 ///  - a wheel rolls along its heading (body x turned by the steering angle) projected on the
 ///    ground. Along it: rolling / braking friction mu_x N opposing the rolling speed, with
 ///    mu_x = mu_roll (1 - b) + mu_static b for brake b (the JSBSim FGLGear law). Across it:
-///    cornering friction opposing the side speed, mu_side = mu_dynamic * min(|slip| / slip_sat, 1)
-///    with slip = atan2(v_side, |v_roll|), linear up to the saturation slip angle;
+///    cornering friction opposing the side speed,
+///    mu_side = mu_dynamic * min(|slip| / slip_sat, |v_side| / band, 1)
+///    with slip = atan2(v_side, |v_roll|): linear in the slip angle up to the saturation slip
+///    angle while the wheel rolls (faster than band / slip_sat), the viscous band below;
 ///  - a structural contact slides: mu_dynamic N opposing the ground-plane velocity;
 ///  - the total ground-plane friction never exceeds mu_static N (friction circle);
-///  - below friction_blend_speed_mps the Coulomb friction blends linearly to zero with speed
-///    (a viscous band): a discontinuous sign(v) would chatter at a standstill. The band must
-///    satisfy friction_blend_speed_mps > mu_static g dt for an explicit integrator at step dt
-///    (0.25 m/s is stable to 50 Hz). Inside it a braked aircraft creeps at
-///    v = blend speed * applied force / (mu N).
+///  - below the band speed the Coulomb friction blends linearly to zero with speed (a viscous
+///    band): a discontinuous sign(v) would chatter at a standstill. The band is the larger of
+///    Params::friction_blend_speed_mps and Inputs::min_friction_blend_speed_mps, the floor an
+///    executive sets so that its integrator stays stable: inside the band each contact's
+///    friction is a damper of rate mu N / band on a contact point of effective mass m_eff, and
+///    an explicit step h needs h * sum(mu N / (band m_eff)) within the method's real-axis
+///    stability limit (Euler 2, RK4 2.79, AB2 1). Inside the band a braked aircraft creeps at
+///    v = band * applied force / (mu N).
 /// Damping guidance: zeta = c / (2 sqrt(k m)) with m the mass the strut carries;
 /// damping_ratio() computes it. Light aircraft and transport packs (JSBSim c172x, 737) have
 /// zeta of about 0.2-1.3 in compression, more in rebound.
@@ -91,6 +97,12 @@ class LandingGear {
     double brake_left = 0.0;   ///< 0..1
     double brake_right = 0.0;  ///< 0..1
     bool gear_down = true;
+    /// Floor on the friction band (m/s), set by the executive for its integrator and step;
+    /// 0: Params::friction_blend_speed_mps alone.
+    double min_friction_blend_speed_mps = 0.0;
+    /// Per contact (same order as Params::contacts), a ceiling on the strut damping (N s/m)
+    /// that the executive's integrator carries at its step; empty: none.
+    std::span<const double> max_damping_nspm;
   };
 
   struct ContactOutput {
@@ -133,13 +145,14 @@ class LandingGear {
   static double damping_ratio(double spring_npm, double damping_nspm, double supported_mass_kg);
 
  private:
-  ContactOutput evaluate_contact(const Contact& contact, const ContactKinematics& kin,
+  ContactOutput evaluate_contact(std::size_t index, const ContactKinematics& kin,
                                  const Inputs& in) const;
   Eigen::Vector3d wheel_friction_ned(const Contact& contact, const Eigen::Vector3d& velocity_ned,
                                      const Eigen::Matrix3d& dcm_ned_to_body, double steer_rad,
-                                     double brake, double normal_n) const;
+                                     double brake, double normal_n, double band_mps) const;
   Eigen::Vector3d sliding_friction_ned(const Contact& contact, const Eigen::Vector3d& velocity_ned,
-                                       double normal_n) const;
+                                       double normal_n, double band_mps) const;
+  double blend_speed_mps(const Inputs& in) const;
   double brake_for(const Contact& contact, const Inputs& in) const;
 
   Params params_;

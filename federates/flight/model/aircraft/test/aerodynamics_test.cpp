@@ -1,7 +1,9 @@
 // Tests of the aerodynamic build-up: c172 coefficients against the JSBSim table numbers,
-// stability-derivative signs, force directions, NASA brick damping moments, hysteresis, CL^2.
+// stability-derivative signs, force directions, NASA brick damping moments, hysteresis, CL^2,
+// and the flow beyond the packs' data (tailwind, crosswind, flat fall).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -254,6 +256,181 @@ TEST(Aerodynamics, EvaluationDoesNotAllocate) {
   g_counting = false;
   EXPECT_EQ(g_allocations.load(), 0);
   EXPECT_GT(sink, 0.0);
+}
+
+// ---- Flow beyond the pack's data -------------------------------------------------------------
+
+// Any flow direction at 10 m/s near sea level (a parked aircraft in a 20 kt wind).
+Aerodynamics::Inputs wind_from(double alpha_rad, double beta_rad) {
+  Aerodynamics::Inputs in = cruise(alpha_rad, 10.0);
+  in.beta_rad = beta_rad;
+  return in;
+}
+
+double qbar_s(const AircraftPack& p, const Aerodynamics::Inputs& in) {
+  return in.qbar_pa * p.geometry.wing_area_m2;
+}
+
+TEST(AeroFlowEnvelope, SpansThePacksTablesAndCapsWhereAlphaIsLost) {
+  // C172: alpha from CLalpha's -10 deg row to CLwbh's 0.36 rad, beta +-0.349 rad (CYb, Clb,
+  // Cnb). 737: alpha and beta +-1.57 rad (CD0, CDbeta), beta capped at 60 deg so that the
+  // weight is 0 in a sideways flow, where alpha is undefined.
+  const AeroFlowEnvelope c172 = Aerodynamics(pack("c172.yaml")).envelope();
+  ASSERT_TRUE(c172.limits_alpha() && c172.limits_beta());
+  EXPECT_DOUBLE_EQ(c172.alpha_min_rad(), -0.1745329252);
+  EXPECT_DOUBLE_EQ(c172.alpha_max_rad(), 0.36);
+  EXPECT_DOUBLE_EQ(c172.beta_min_rad(), -0.349);
+  EXPECT_DOUBLE_EQ(c172.beta_max_rad(), 0.349);
+  const AeroFlowEnvelope b737 = Aerodynamics(pack("b737.yaml")).envelope();
+  EXPECT_DOUBLE_EQ(b737.alpha_min_rad(), -1.57);
+  EXPECT_DOUBLE_EQ(b737.alpha_max_rad(), 1.57);
+  EXPECT_NEAR(b737.beta_max_rad(), 60.0 * kDeg, 1e-12);
+  EXPECT_NEAR(b737.beta_min_rad(), -60.0 * kDeg, 1e-12);
+  // The NASA bodies' coefficients depend on no flow angle: nothing is limited.
+  for (const char* name : {"nasa_sphere_drag.yaml", "nasa_brick_damped.yaml"}) {
+    const AeroFlowEnvelope none = Aerodynamics(pack(name)).envelope();
+    EXPECT_FALSE(none.limits_alpha() || none.limits_beta()) << name;
+    EXPECT_EQ(none.attached_weight(kPi, 1.5), 1.0) << name;
+  }
+  // The weight: 1 inside, cos^2 over 30 deg outside.
+  EXPECT_EQ(c172.attached_weight(0.36, 0.349), 1.0);
+  EXPECT_NEAR(c172.attached_weight(0.36 + 15.0 * kDeg, 0.0), 0.5, 1e-12);
+  EXPECT_NEAR(c172.attached_weight(0.0, -0.349 - 15.0 * kDeg), 0.5, 1e-12);
+  EXPECT_EQ(c172.attached_weight(0.36 + 30.0 * kDeg, 0.0), 0.0);
+}
+
+TEST(AeroFlowEnvelope, InsideTheDataTheBuildUpIsUntouched) {
+  // The limits and the weight are the identity inside the envelope, so every in-envelope
+  // number (the JSBSim checks above) is the pack's own.
+  Aerodynamics aero(pack("c172.yaml"));
+  for (double alpha : {-0.17, 0.0, 0.2, 0.36}) {
+    for (double beta : {-0.349, 0.0, 0.3}) {
+      const auto out = aero.compute(wind_from(alpha, beta), false);
+      EXPECT_EQ(out.attached_weight, 1.0);
+      EXPECT_EQ(aero.envelope().limited_alpha(alpha), alpha);
+      EXPECT_EQ(aero.envelope().limited_beta(beta), beta);
+    }
+  }
+}
+
+TEST(AeroFlowEnvelope, TailwindGivesTheHeadOnDragAndNoLift) {
+  // The report's case: a C172 parked in a tailwind, alpha -179.2 deg. The terms linear in
+  // alpha, extrapolated, gave CL = -14.6 (14 kN of lift at 61 Pa, 1.35 times the weight) and
+  // Cm = +5.7; now the flow from behind is separated flow with the head-on coefficients.
+  const AircraftPack p = pack("c172.yaml");
+  Aerodynamics aero(p);
+  const auto head_on = aero.compute(wind_from(0.0, 0.0), false);
+  for (double alpha : {kPi, -179.2 * kDeg, 179.9 * kDeg}) {
+    SCOPED_TRACE(alpha);
+    const Aerodynamics::Inputs in = wind_from(alpha, 0.0);
+    const auto out = aero.compute(in, false);
+    EXPECT_EQ(out.attached_weight, 0.0);
+    EXPECT_DOUBLE_EQ(out.CL, 0.0);
+    EXPECT_DOUBLE_EQ(out.CY, 0.0);
+    // Drag along the flow, from behind: it pushes the aircraft forward.
+    const Eigen::Vector3d v_hat(std::cos(alpha), 0.0, std::sin(alpha));
+    EXPECT_NEAR((out.force_b + out.drag_n * v_hat).norm(), 0.0, 1e-9 * out.drag_n);
+    EXPECT_GT(out.force_b.x(), 0.0);
+    // About the head-on drag and pitching moment (the wing-plane incidence is under 1 deg).
+    EXPECT_NEAR(out.CD, head_on.CD, 0.01);
+    EXPECT_NEAR(out.Cm, head_on.Cm, 0.05);
+    EXPECT_LT(out.force_b.norm(), 0.1 * qbar_s(p, in));
+  }
+}
+
+TEST(AeroFlowEnvelope, CrosswindLiftsNothingAndWeathercocksIntoTheWind) {
+  // Air from the right (beta +90 deg): alpha is undefined (u = w = 0), and whatever it reads
+  // the result is the same: no lift, drag pushing the aircraft left, and the pack's
+  // weathercock yawing moment (Cn_beta > 0) turning the nose right, into the wind.
+  const AircraftPack p = pack("c172.yaml");
+  Aerodynamics aero(p);
+  const auto reference = aero.compute(wind_from(0.0, 0.5 * kPi), false);
+  EXPECT_DOUBLE_EQ(reference.CL, 0.0);
+  EXPECT_LT(reference.force_b.y(), 0.0);
+  EXPECT_NEAR(reference.force_b.y(), -reference.drag_n, 1e-9 * reference.drag_n);
+  EXPECT_GT(reference.Cn, 0.0);
+  for (double alpha : {-3.0, -1.0, 0.4, 2.0, 3.1}) {
+    const auto out = aero.compute(wind_from(alpha, 0.5 * kPi), false);
+    EXPECT_NEAR((out.force_b - reference.force_b).norm(), 0.0, 1e-9 * reference.drag_n) << alpha;
+    EXPECT_NEAR((out.moment_b - reference.moment_b).norm(), 0.0, 1e-9) << alpha;
+  }
+}
+
+TEST(AeroFlowEnvelope, FlatFallKeepsThePitchStiffness) {
+  // Falling flat (air from below, alpha +90 deg) the pack's Cm at the edge of its data holds
+  // the nose-down moment that brings the aircraft back into flight; rising flat, nose up.
+  Aerodynamics aero(pack("c172.yaml"));
+  const auto falling = aero.compute(wind_from(0.5 * kPi, 0.0), false);
+  const auto edge = aero.compute(wind_from(0.36, 0.0), false);
+  EXPECT_DOUBLE_EQ(falling.CL, 0.0);
+  EXPECT_NEAR(falling.Cm, edge.Cm, 1e-12);
+  EXPECT_LT(falling.Cm, 0.0);
+  EXPECT_GT(aero.compute(wind_from(-0.5 * kPi, 0.0), false).Cm, 0.0);
+}
+
+TEST(AeroFlowEnvelope, EveryFlowDirectionIsBoundedByTheDataAndContinuous) {
+  // Over the whole sphere of flow directions the coefficients never exceed what the pack's
+  // own data reach inside the envelope, and the forces and moments are continuous, through
+  // alpha = +-180 deg (where alpha jumps) and beta = +-90 deg (where alpha is undefined).
+  for (const char* name : {"c172.yaml", "b737.yaml"}) {
+    SCOPED_TRACE(name);
+    const AircraftPack p = pack(name);
+    Aerodynamics aero(p);
+    const AeroFlowEnvelope& env = aero.envelope();
+    std::array<double, 6> data_max{};
+    auto coefficients = [](const Aerodynamics::Outputs& o) {
+      return std::array<double, 6>{o.CL, o.CD, o.CY, o.Cl, o.Cm, o.Cn};
+    };
+    // The data's extremes inside the envelope (a fine grid: 0.5 % allowed for what it misses
+    // between its points, e.g. CDwbh's peak at 0.279 rad).
+    for (int i = 0; i <= 400; ++i) {
+      for (int j = 0; j <= 40; ++j) {
+        const double a = env.alpha_min_rad() + (env.alpha_max_rad() - env.alpha_min_rad()) * i / 400;
+        const double b = env.beta_min_rad() + (env.beta_max_rad() - env.beta_min_rad()) * j / 40;
+        const auto c = coefficients(aero.compute(wind_from(a, b), false));
+        for (std::size_t k = 0; k < 6; ++k) data_max[k] = std::max(data_max[k], std::abs(c[k]));
+      }
+    }
+    for (int i = -180; i <= 180; i += 3) {
+      for (int j = -90; j <= 90; j += 3) {
+        const auto c = coefficients(aero.compute(wind_from(i * kDeg, j * kDeg), false));
+        for (std::size_t k = 0; k < 6; ++k) {
+          EXPECT_LE(std::abs(c[k]), 1.005 * data_max[k] + 1e-9) << i << " " << j << " axis " << k;
+        }
+      }
+    }
+    // Continuity: 0.01 deg either side of the two singular lines.
+    const double e = 0.01 * kDeg;
+    for (double beta : {0.0, 0.3, -1.0}) {
+      const auto l = aero.compute(wind_from(kPi - e, beta), false);
+      const auto r = aero.compute(wind_from(-kPi + e, beta), false);
+      const double scale = qbar_s(p, wind_from(0.0, 0.0));
+      EXPECT_LT((l.force_b - r.force_b).norm(), 1e-3 * scale) << beta;
+      EXPECT_LT((l.moment_b - r.moment_b).norm(), 1e-3 * scale * p.geometry.wing_span_m) << beta;
+    }
+    for (double alpha : {-2.0, 0.1, 1.0}) {
+      const auto l = aero.compute(wind_from(alpha, 0.5 * kPi - e), false);
+      const auto r = aero.compute(wind_from(alpha + kPi, 0.5 * kPi - e), false);
+      const double scale = qbar_s(p, wind_from(0.0, 0.0));
+      EXPECT_LT((l.force_b - r.force_b).norm(), 1e-3 * scale) << alpha;
+      EXPECT_LT((l.moment_b - r.moment_b).norm(), 1e-3 * scale * p.geometry.wing_span_m) << alpha;
+    }
+  }
+}
+
+TEST(AeroFlowEnvelope, AFlowFromBehindIsNotAStall) {
+  // The stall flag reads the forward-equivalent alpha: a tailwind (alpha +-179 deg, which
+  // flips sign with w) neither sets nor clears it in turn.
+  Aerodynamics aero(pack("c172.yaml"));
+  for (double alpha : {179.0 * kDeg, -179.0 * kDeg, 179.5 * kDeg}) {
+    aero.evaluate(wind_from(alpha, 0.0));
+    EXPECT_FALSE(aero.stall_hysteresis_active()) << alpha;
+  }
+  aero.evaluate(wind_from(0.37, 0.0));
+  EXPECT_TRUE(aero.stall_hysteresis_active());
+  EXPECT_NEAR(AeroFlowEnvelope::forward_equivalent_alpha(170.0 * kDeg), 10.0 * kDeg, 1e-12);
+  EXPECT_NEAR(AeroFlowEnvelope::forward_equivalent_alpha(-170.0 * kDeg), -10.0 * kDeg, 1e-12);
+  EXPECT_EQ(AeroFlowEnvelope::forward_equivalent_alpha(0.3), 0.3);
 }
 
 TEST(Aerodynamics, WindToBodyIsARotation) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -118,6 +119,82 @@ TEST(LandingGear, CorneringFrictionFollowsTheSlipAngleLaw) {
       main, p, Eigen::Vector3d(10.0 * std::cos(30 * kDeg), -10.0 * std::sin(30 * kDeg), 0));
   EXPECT_NEAR(out.force_b_n.y(), main.dynamic_friction * n, 1e-9);
   EXPECT_LE(out.force_b_n.head<2>().norm(), main.static_friction * n + 1e-9);
+}
+
+// One braked main wheel, level, heading north, with the executive's band floor and damping
+// ceiling as given.
+LandingGear::Outputs evaluate_with(const LandingGear::Contact& contact,
+                                   const Eigen::Vector3d& position_ned,
+                                   const Eigen::Vector3d& velocity_ned, double brake,
+                                   double band_floor_mps, std::span<const double> max_damping) {
+  LandingGear::Params params;
+  params.contacts = {contact};
+  LandingGear gear(params);
+  const LandingGear::ContactKinematics kin{position_ned, velocity_ned};
+  LandingGear::Inputs in;
+  in.contacts = std::span<const LandingGear::ContactKinematics>(&kin, 1);
+  in.brake_left = brake;
+  in.min_friction_blend_speed_mps = band_floor_mps;
+  in.max_damping_nspm = max_damping;
+  gear.step(0.0, in);
+  return gear.outputs();
+}
+
+TEST(LandingGear, SideFrictionNearAStandstillKeepsTheBandSlope) {
+  // Rolling at 1 cm/s with 1 mm/s of side slip the slip angle is 5.7 deg, a third of the way
+  // to saturation; the slip-angle law's side force, mu_d N (slip / slip_sat), would grow as
+  // 1/v_roll per m/s of side speed (here 5.7 times the band's slope, which chattered with AB2
+  // at 50 Hz). Below band / slip_sat = 1.4 m/s of rolling speed the side friction keeps the
+  // viscous band's slope instead: mu_d N v_side / band, whatever the rolling speed.
+  const LandingGear::Contact main = braked_main();
+  const Eigen::Vector3d p(0.0, 0.0, 0.05);
+  const double n = main.spring_npm * 0.05;
+  const double band = 0.25;
+  for (double v_roll : {0.0, 0.01, 0.1, 1.0}) {
+    const LandingGear::Outputs out = evaluate_single(main, p, Eigen::Vector3d(v_roll, 1e-3, 0));
+    EXPECT_NEAR(out.force_b_n.y(), -main.dynamic_friction * n * 1e-3 / band, 1e-9) << v_roll;
+  }
+  // Rolling at 20 m/s the slip-angle law governs alone (as in the cornering test above).
+  const double slip = std::atan2(0.7, 20.0);
+  EXPECT_NEAR(evaluate_single(main, p, Eigen::Vector3d(20.0, 0.7, 0)).force_b_n.y(),
+              -main.dynamic_friction * slip / main.cornering_saturation_slip_rad * n, 1e-9);
+}
+
+TEST(LandingGear, ExecutiveFloorWidensTheFrictionBand) {
+  const LandingGear::Contact main = braked_main();
+  const Eigen::Vector3d p(0.0, 0.0, 0.05);
+  const Eigen::Vector3d slow(0.1, 0.0, 0.0);
+  const double n = main.spring_npm * 0.05;
+  // A floor above the gear's own 0.25 m/s band widens it; one below, or NaN, changes nothing.
+  EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, 0.5, {}).force_b_n.x(),
+              -main.static_friction * n * 0.1 / 0.5, 1e-9);
+  for (double floor : {0.0, 0.1, std::nan("")}) {
+    EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, floor, {}).force_b_n.x(),
+                -main.static_friction * n * 0.1 / 0.25, 1e-9)
+        << floor;
+  }
+}
+
+TEST(LandingGear, DampingCeilingHoldsTheStrutDamper) {
+  const LandingGear::Contact main = braked_main();
+  const Eigen::Vector3d p(0.0, 0.0, 0.05);
+  const double spring = main.spring_npm * 0.05;
+  const double ceiling = 1000.0;  // below both of this strut's dampers
+  const std::array<double, 1> limit{ceiling};
+  EXPECT_NEAR(evaluate_with(main, p, Eigen::Vector3d(0, 0, 0.2), 0.0, 0.0, limit)
+                  .contacts[0]
+                  .normal_force_n,
+              spring + ceiling * 0.2, 1e-9);
+  EXPECT_NEAR(evaluate_with(main, p, Eigen::Vector3d(0, 0, -0.2), 0.0, 0.0, limit)
+                  .contacts[0]
+                  .normal_force_n,
+              spring - ceiling * 0.2, 1e-9);
+  // A ceiling above the damper, or none, leaves it alone.
+  const std::array<double, 1> high{1e9};
+  EXPECT_NEAR(evaluate_with(main, p, Eigen::Vector3d(0, 0, -0.2), 0.0, 0.0, high)
+                  .contacts[0]
+                  .normal_force_n,
+              spring - main.damping_rebound_nspm * 0.2, 1e-9);
 }
 
 TEST(LandingGear, StructuralContactSlidesAgainstItsVelocity) {
