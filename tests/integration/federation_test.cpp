@@ -355,6 +355,15 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   EXPECT_TRUE(wait_for([&] { return engine_sub.latest(engine) && engine.failed(); }, 10))
       << flight->output();
 
+  msg::SimCommand weather;
+  weather.kind(msg::COMMAND_WEATHER);
+  weather.weather().wind_from_rad(M_PI);  // a southerly wind blows north
+  weather.weather().wind_speed_mps(10.0);
+  commands.publish(weather);
+  EXPECT_TRUE(wait_for([&] { return latest() && state.air().wind_ned_mps()[0] > 9.0; }, 10))
+      << "wind north component " << state.air().wind_ned_mps()[0];
+
+  // Parked on the threshold in that 20 kt quartering tailwind, the braked aircraft must hold.
   msg::SimCommand move;
   move.kind(msg::COMMAND_REPOSITION);
   move.reposition().kind(msg::REPOSITION_RUNWAY_THRESHOLD);
@@ -385,13 +394,6 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   EXPECT_NEAR(state.altitude_msl_m(), 4000 * 0.3048, 15.0);
   EXPECT_NEAR(state.latitude_rad() * 180 / M_PI, 37.6, 0.01);
 
-  msg::SimCommand weather;
-  weather.kind(msg::COMMAND_WEATHER);
-  weather.weather().wind_from_rad(M_PI);  // a southerly wind blows north
-  weather.weather().wind_speed_mps(10.0);
-  commands.publish(weather);
-  EXPECT_TRUE(wait_for([&] { return latest() && state.air().wind_ned_mps()[0] > 9.0; }, 10))
-      << "wind north component " << state.air().wind_ned_mps()[0];
 
   timing->terminate();
   ASSERT_TRUE(timing->wait(20));

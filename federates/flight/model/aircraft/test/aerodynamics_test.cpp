@@ -11,22 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/aerodynamics.hpp"
 
-// Counts heap allocations while a test asks for it (to check evaluate() never allocates).
-// GCC flags malloc/free inside replaced global operators as mismatched; they are the pair.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-void* operator new(std::size_t size) {
-  if (g_counting) ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace fedsim::flight {
 namespace {
@@ -244,17 +231,15 @@ TEST(Aerodynamics, EvaluationDoesNotAllocate) {
   Aerodynamics::Inputs in = cruise(0.1);
   in.omega_air_b = Eigen::Vector3d(0.1, 0.2, 0.3);
   in.flap_norm = 0.5;
-  g_allocations = 0;
-  g_counting = true;
-  { std::vector<double> probe(3); }  // the counter itself must see this one
-  g_counting = false;
-  ASSERT_EQ(g_allocations.load(), 1);
-  g_allocations = 0;
-  g_counting = true;
+  {
+    const util::AllocationScope probe_scope;
+    { std::vector<double> probe(3); }  // the counter itself must see this one
+    ASSERT_EQ(probe_scope.allocations(), 1u);
+  }
+  const util::AllocationScope scope;
   double sink = 0.0;
   for (int i = 0; i < 100; ++i) sink += aero.evaluate(in).CL;
-  g_counting = false;
-  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(scope.allocations(), 0u);
   EXPECT_GT(sink, 0.0);
 }
 

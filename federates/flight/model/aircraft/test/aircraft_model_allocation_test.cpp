@@ -1,7 +1,4 @@
-// A step of the aircraft executive never allocates: the global operator new is replaced by a
-// counting one. Built as its own executable (flight_aircraft_allocation_tests, see
-// federates/flight/fly/CMakeLists.txt): flight_aircraft_tests already replaces operator new in
-// aerodynamics_test.cpp, and a program can replace it only once.
+// A step of the aircraft executive never allocates (fedsim_allocation_counter counts operator new).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -9,30 +6,9 @@
 #include <cstdlib>
 #include <new>
 
+#include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/test/flight_test_support.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// GCC cannot tell that these replacements pair malloc with free, and warns where it inlines
-// them; the pairing is correct by construction.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace fedsim::flight {
 namespace {
@@ -41,10 +17,10 @@ using namespace testing;
 
 TEST(AircraftModelNoAllocation, TheCountingAllocatorCounts) {
   // Called directly: a new-expression that is deleted at once may be elided by the compiler.
-  const long before = g_allocations.load();
+  const util::AllocationScope scope;
   void* p = ::operator new(16);
   ::operator delete(p);
-  EXPECT_EQ(g_allocations.load() - before, 1);
+  EXPECT_EQ(scope.allocations(), 1u);
 }
 
 TEST(AircraftModelNoAllocation, StepsSetControlsAndOutputsDoNotAllocate) {
@@ -74,7 +50,7 @@ TEST(AircraftModelNoAllocation, StepsSetControlsAndOutputsDoNotAllocate) {
         AircraftControls c = trim.controls;
         c.brake_left = c.brake_right = 0.0;
         c.set_throttle(1.0);
-        const long before = g_allocations.load();
+        const util::AllocationScope scope;
         for (int i = 0; i < 400; ++i) {
           c.elevator = i % 50 < 25 ? -0.4 : 0.1;
           c.steering = i % 7 * 0.1;
@@ -86,7 +62,7 @@ TEST(AircraftModelNoAllocation, StepsSetControlsAndOutputsDoNotAllocate) {
           volatile double sink = model->outputs().geodetic.alt_m + model->outputs().tas_mps;
           (void)sink;
         }
-        EXPECT_EQ(g_allocations.load() - before, 0)
+        EXPECT_EQ(scope.allocations(), 0u)
             << pack << " " << to_string(method)
             << (earth == EarthModelKind::kFlat ? " flat" : " wgs84");
         EXPECT_TRUE(std::isfinite(model->outputs().geodetic.alt_m));
