@@ -127,17 +127,17 @@ void Federate::step_pending_locked(bool forced) {
   pending_ = false;
   const FrameContext ctx = context_of(pending_tick_);
 
-  std::deque<msg::SimCommand> commands;
   {
     std::lock_guard lock(command_mutex_);
-    commands.swap(commands_);
+    commands_now_.swap(commands_);
+    commands_.clear();
   }
   const std::uint64_t start_ns = util::monotonic_ns();
   const std::uint64_t latency_ns =
       start_ns > pending_tick_.publish_time_ns() ? start_ns - pending_tick_.publish_time_ns() : 0;
   try {
     if (command_handler_) {
-      for (const auto& cmd : commands) command_handler_(cmd);
+      for (const auto& cmd : commands_now_) command_handler_(cmd);
     }
     step_(ctx);
   } catch (const std::exception& e) {

@@ -22,7 +22,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
-#include <deque>
+#include <vector>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -199,7 +199,8 @@ class Federate {
   msg::FrameDone done_sample_;
 
   std::mutex command_mutex_;
-  std::deque<msg::SimCommand> commands_;
+  std::vector<msg::SimCommand> commands_;       // received, not yet delivered
+  std::vector<msg::SimCommand> commands_now_;   // delivered this frame (swapped: no allocation)
 
   std::atomic<bool> stop_requested_{false};
   std::atomic<int> exit_code_{0};

@@ -16,12 +16,6 @@ namespace fedsim::timing {
 namespace {
 constexpr std::uint64_t kNsPerS = 1'000'000'000ull;
 
-std::string handle_key(const eprosima::fastrtps::rtps::InstanceHandle_t& handle) {
-  std::ostringstream out;
-  for (std::size_t i = 0; i < 16; ++i) out << std::hex << static_cast<int>(handle.value[i]) << ".";
-  return out.str();
-}
-
 msg::RunState to_msg(RunState s) {
   switch (s) {
     case RunState::kRun: return msg::RUN_STATE_RUN;
@@ -156,7 +150,7 @@ void TimingFederate::on_ack(const msg::FrameDone& ack, const runtime::fdds::Samp
   const std::uint64_t now = util::monotonic_ns();
   std::lock_guard lock(mutex_);
   const std::string name = ack.federate().to_string();
-  writer_to_federate_[handle_key(info.publication_handle)] = name;
+  remember_writer_locked(info.publication_handle, name);
   last_ack_ns_[name] = now;
   if (!tracker_.acknowledge(name, ack.frame())) return;
   summary_.all_acked.add_ns(now - tick_publish_ns_);
@@ -171,10 +165,20 @@ void TimingFederate::on_ack(const msg::FrameDone& ack, const runtime::fdds::Samp
 void TimingFederate::on_liveliness(const runtime::fdds::LivelinessChangedStatus& status) {
   if (status.not_alive_count_change <= 0) return;
   std::lock_guard lock(mutex_);
-  const auto it = writer_to_federate_.find(handle_key(status.last_publication_handle));
-  if (it != writer_to_federate_.end() && tracker_.expects(it->second)) {
-    mark_lost_locked(it->second, "liveliness lost (process gone or hung)");
+  for (const auto& [handle, federate] : writers_) {
+    if (handle == status.last_publication_handle && tracker_.expects(federate)) {
+      mark_lost_locked(federate, "liveliness lost (process gone or hung)");
+    }
   }
+}
+
+void TimingFederate::remember_writer_locked(const eprosima::fastrtps::rtps::InstanceHandle_t& handle,
+                                            const std::string& federate) {
+  // A handful of writers: a linear scan on the acknowledgement path allocates nothing.
+  for (const auto& entry : writers_) {
+    if (entry.first == handle) return;
+  }
+  writers_.emplace_back(handle, federate);
 }
 
 void TimingFederate::mark_lost_locked(const std::string& federate, const std::string& why) {

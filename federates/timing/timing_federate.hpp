@@ -76,6 +76,8 @@ class TimingFederate {
   void run_lockstep();
   void publish_tick_locked();
   void republish_tick_locked();
+  void remember_writer_locked(const eprosima::fastrtps::rtps::InstanceHandle_t& handle,
+                              const std::string& federate);
   void mark_lost_locked(const std::string& federate, const std::string& why);
   void check_ack_timeout_locked(std::uint64_t now_ns);
   bool should_stop_locked() const;
@@ -108,7 +110,8 @@ class TimingFederate {
   std::uint64_t start_ns_ = 0;
   std::uint64_t end_ns_ = 0;
   std::set<std::string> ready_;
-  std::map<std::string, std::string> writer_to_federate_;  // publication handle -> name
+  // frame_done writer -> federate (to name a federate whose liveliness is lost)
+  std::vector<std::pair<eprosima::fastrtps::rtps::InstanceHandle_t, std::string>> writers_;
   std::map<std::string, std::uint64_t> last_ack_ns_;       // federate -> time of its last ack
   TimingSummary summary_;
   std::vector<std::string> status_messages_;
