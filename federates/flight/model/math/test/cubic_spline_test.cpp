@@ -1,5 +1,6 @@
 // Tests of the cubic spline against the seed's f1tab (Table 2.5 data tabulated in section 2.9).
 #include "flight/model/math/cubic_spline.hpp"
+#include "flight/model/math/test/seed_f1tab.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,18 +13,7 @@ namespace {
 const std::vector<double> kMach = {0.0, 0.5, 0.6, 0.7, 0.8, 0.85, 0.875, 0.89, 0.91, 0.92, 0.95, 1.0};
 const std::vector<double> kValue = {3.3, 3.4, 3.5, 3.65, 3.85, 4.15, 4.45, 4.65, 4.65, 4.5, 4.0, 3.65};
 
-// Seed section 2.9, f1tab[]: the spline of Table 2.5 tabulated at M = 0, 0.01, ..., 1.0.
-constexpr double kF1tab[] = {
-    3.3000, 3.3019, 3.3036, 3.3051, 3.3065, 3.3076, 3.3087, 3.3096, 3.3104, 3.3111, 3.3116,
-    3.3121, 3.3126, 3.3129, 3.3132, 3.3135, 3.3138, 3.3141, 3.3143, 3.3146, 3.3149, 3.3153,
-    3.3157, 3.3161, 3.3167, 3.3173, 3.3181, 3.3189, 3.3199, 3.3211, 3.3224, 3.3238, 3.3255,
-    3.3273, 3.3293, 3.3316, 3.3341, 3.3368, 3.3398, 3.3430, 3.3465, 3.3504, 3.3545, 3.3589,
-    3.3637, 3.3688, 3.3743, 3.3801, 3.3864, 3.3930, 3.4000, 3.4074, 3.4153, 3.4237, 3.4327,
-    3.4422, 3.4524, 3.4632, 3.4747, 3.4870, 3.5000, 3.5138, 3.5284, 3.5434, 3.5588, 3.5744,
-    3.5900, 3.6056, 3.6208, 3.6357, 3.6500, 3.6637, 3.6772, 3.6912, 3.7062, 3.7228, 3.7416,
-    3.7631, 3.7880, 3.8167, 3.8500, 3.8887, 3.9353, 3.9925, 4.0631, 4.1500, 4.2554, 4.3802,
-    4.5233, 4.6500, 4.7010, 4.6500, 4.5000, 4.3211, 4.1476, 4.0000, 3.8930, 3.8184, 3.7622,
-    3.7107, 3.650};
+using testing::kF1tab;  // seed section 2.9, f1tab[]
 
 TEST(CubicSpline, ReproducesTheSeedF1tab) {
   // The book's table was generated with Press et al.'s spline() with the end slopes set to the
