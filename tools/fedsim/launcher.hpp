@@ -16,7 +16,7 @@ struct RunOptions {
   int domain = -1;               // -1 = FEDSIM_DOMAIN, else the deployment's, else 0
   std::string out_dir;           // "" = out/<deployment name>
   double stop_grace_s = 5.0;     // SIGTERM -> SIGKILL
-  double progress_period_s = 5.0;
+  double progress_period_s = 2.0;
   bool quiet = false;            // do not echo federate output (it still goes to the log files)
 };
 
