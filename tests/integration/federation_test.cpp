@@ -445,5 +445,38 @@ federates:
   EXPECT_TRUE(recordings[0] == recordings[1]) << "the two lockstep runs differ";
 }
 
+
+// `fedsim command` reaches a running federation: freeze holds simulation time, run resumes it.
+TEST(Federation, CommandLineInstructorFreezesAndRuns) {
+  const int domain = 142;
+  const std::string dir = temp_dir("cli");
+  auto a = start(dir, "a", domain, "fedsim-synthetic", {"--trace", dir + "/a.csv"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "realtime", "--rate", "100", "--expect", "a", "--duration", "6",
+                       "--shutdown-on-exit"});
+  auto command = [&](const std::string& what) {
+    ChildProcess cli({bin("fedsim"), "command", what, "--domain", std::to_string(domain)},
+                     dir + "/" + what + ".log");
+    EXPECT_TRUE(cli.wait(20));
+    EXPECT_EQ(cli.exit_code(), 0) << cli.output();
+  };
+  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 2000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  command("freeze");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  command("run");
+  ASSERT_TRUE(timing->wait(30)) << timing->output();
+  ASSERT_TRUE(a->wait(10));
+  const auto rows = read_trace(dir + "/a.csv");
+  int frozen = 0, running_after_freeze = 0;
+  for (const auto& r : rows) {
+    if (r.state == msg::RUN_STATE_FREEZE) ++frozen;
+    if (frozen > 0 && r.state == msg::RUN_STATE_RUN) ++running_after_freeze;
+  }
+  EXPECT_GT(frozen, 20);  // ~0.5 s at 100 Hz, plus the command's own discovery time
+  EXPECT_GT(running_after_freeze, 20);
+}
+
 }  // namespace
 }  // namespace fedsim::testing

@@ -3,11 +3,16 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/shutdown.hpp"
+#include "common/runtime/subscription.hpp"
 
 #include <unistd.h>
 
+#include <chrono>
 #include <iostream>
+#include <thread>
 #include <memory>
+#include <mutex>
+#include <set>
 
 namespace fedsim::launcher {
 
@@ -19,7 +24,7 @@ constexpr double kNm = 1852.0;
 
 struct CommandOptions {
   runtime::ParticipantOptions dds;
-  double wait_s = 3.0;
+  double wait_s = 5.0;  // an upper bound: it returns once discovery has settled
   std::string target;
   // reposition
   std::string airport, runway;
@@ -33,23 +38,72 @@ struct CommandOptions {
   unsigned seed = 0;
 };
 
+/// The federates alive on the domain, from their (transient-local) status: every one has a
+/// command reader.
+class LiveFederates {
+ public:
+  explicit LiveFederates(const std::shared_ptr<runtime::DdsParticipant>& dds)
+      : sub_(dds, msg::TOPIC_FEDERATE_STATUS, "status",
+             [this](const msg::FederateStatus& s, const auto&) {
+               std::lock_guard lock(mutex_);
+               const bool gone = s.state() == msg::FEDERATE_STOPPING ||
+                                 s.state() == msg::FEDERATE_FAILED || s.state() == msg::FEDERATE_LOST;
+               if (gone) {
+                 alive_.erase(s.federate().to_string());
+               } else {
+                 alive_.insert(s.federate().to_string());
+               }
+             }) {}
+  int count() const {
+    std::lock_guard lock(mutex_);
+    return static_cast<int>(alive_.size());
+  }
+
+ private:
+  runtime::Subscription<msg::FederateStatus> sub_;
+  mutable std::mutex mutex_;
+  std::set<std::string> alive_;
+};
+
+/// Waits (at most wait_s) until the command writer has matched the command reader of every
+/// federate that reports a status and that number has been stable for a second.
+void wait_for_discovery(const runtime::Publisher<msg::SimCommand>& pub, const LiveFederates& live,
+                        double wait_s) {
+  using clock = std::chrono::steady_clock;
+  const auto until = clock::now() + std::chrono::milliseconds(static_cast<int>(wait_s * 1000));
+  int seen = -1;
+  auto stable_since = clock::now();
+  while (clock::now() < until) {
+    const int matched = pub.matched_readers();
+    if (matched != seen) {
+      seen = matched;
+      stable_since = clock::now();
+    }
+    const bool all_known = matched > 0 && matched >= live.count();
+    if (all_known && clock::now() - stable_since > std::chrono::seconds(1)) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
 int send(const CommandOptions& o, msg::SimCommand command) {
   runtime::install_shutdown_handler();
   try {
     auto dds = runtime::DdsParticipant::create(o.dds);
+    LiveFederates live(dds);
     runtime::Publisher<msg::SimCommand> pub(dds, msg::TOPIC_SIM_COMMAND, "command");
     command.issuer("fedsim-command");
     command.sequence_number(static_cast<uint32_t>(time(nullptr)));
-    // Give discovery a moment so that running federates get the command now; late joiners get
-    // it anyway from the transient-local history while this process lives.
-    pub.wait_for_readers(1, std::chrono::milliseconds(static_cast<int>(o.wait_s * 1000)));
-    if (pub.matched_readers() == 0) {
+    // Every running federate must get the command before this process, and with it the
+    // transient-local history, goes away.
+    wait_for_discovery(pub, live, o.wait_s);
+    const int readers = pub.matched_readers();
+    if (readers == 0) {
       std::cerr << "fedsim command: no federate is listening on domain " << o.dds.domain_id
                 << " (sent anyway)\n";
     }
     pub.publish(command);
     pub.wait_for_acknowledgments(std::chrono::seconds(2));
-    std::cout << "sent to " << pub.matched_readers() << " reader(s)\n";
+    std::cout << "sent to " << readers << " reader(s)\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "fedsim command: " << e.what() << "\n";
@@ -64,10 +118,18 @@ msg::SimCommand run_state(msg::RunState s) {
   return c;
 }
 
+/// The options every `fedsim command` verb takes: DDS domain/QoS and the discovery wait.
+void add_common_options(CLI::App& cmd, CommandOptions& o) {
+  runtime::add_dds_options(cmd, o.dds);
+  cmd.add_option("--wait", o.wait_s, "at most this many seconds to discover the federates")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
 void add_simple(CLI::App& parent, std::shared_ptr<CommandOptions> o, int& exit_code,
                 const std::string& name, const std::string& help, msg::SimCommand command) {
   auto* cmd = parent.add_subcommand(name, help);
-  runtime::add_dds_options(*cmd, o->dds);
+  add_common_options(*cmd, *o);
   cmd->callback([o, command, &exit_code] { exit_code = send(*o, command); });
 }
 }  // namespace
@@ -76,8 +138,6 @@ void add_command_commands(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("command", "send an instructor command to the federation");
   cmd->require_subcommand(1);
   auto o = std::make_shared<CommandOptions>();
-  cmd->add_option("--wait", o->wait_s, "seconds to wait for federates to be discovered")
-      ->capture_default_str();
   add_simple(*cmd, o, exit_code, "run", "run (simulation time advances)", run_state(msg::RUN_STATE_RUN));
   add_simple(*cmd, o, exit_code, "freeze", "freeze (frames tick, simulation time holds)",
              run_state(msg::RUN_STATE_FREEZE));
@@ -89,7 +149,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
 
   auto* repo = cmd->add_subcommand("reposition", "move the aircraft: to a runway threshold, an "
                                                  "approach gate (--gate-nm) or a point (--lat ...)");
-  runtime::add_dds_options(*repo, o->dds);
+  add_common_options(*repo, *o);
   repo->add_option("--airport", o->airport, "ICAO ident, e.g. KSFO");
   repo->add_option("--runway", o->runway, "runway end, e.g. 28R");
   repo->add_option("--gate-nm", o->gate_nm, "approach gate distance from the threshold [NM]");
@@ -126,7 +186,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
   });
 
   auto* wx = cmd->add_subcommand("weather", "set wind, turbulence and the atmosphere");
-  runtime::add_dds_options(*wx, o->dds);
+  add_common_options(*wx, *o);
   wx->add_option("--wind-from", o->wind_from_deg, "surface wind direction, true [deg]");
   wx->add_option("--wind-kt", o->wind_kt, "surface wind speed [kt]");
   wx->add_option("--gradient-kt-per-1000ft", o->gradient_kt_per_1000ft, "wind increase with height");
@@ -158,7 +218,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
   for (const bool fail : {true, false}) {
     auto* f = cmd->add_subcommand(fail ? "fail" : "restore",
                                   fail ? "fail a system, e.g. engine1" : "restore a failed system");
-    runtime::add_dds_options(*f, o->dds);
+    add_common_options(*f, *o);
     f->add_option("system", o->target, "system: engine1..engine4")->required();
     f->callback([o, fail, &exit_code] {
       msg::SimCommand c;
