@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
   FlightOptions o;
   CLI::App app{"fedsim-flight: the flight federate (equations of motion, aero, engines, gear)"};
   runtime::add_federate_options(app, common, "flight");
-  app.add_option("--aircraft", o.aircraft, "aircraft pack (YAML), e.g. data/aircraft/c172.yaml")
+  app.add_option("--aircraft", o.aircraft,
+                 "aircraft pack: a YAML file, or a pack name in data/aircraft (c172, b737)")
       ->required();
   flight::add_start_options(app, o.start);
   app.add_option("--earth", o.earth, "flat | wgs84")->check(CLI::IsMember({"flat", "wgs84"}))->capture_default_str();
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
   flight::StartState start;
   flight::RunwayTable runways;
   try {
-    model = std::make_unique<flight::AircraftModel>(flight::load_aircraft_pack(o.aircraft),
+    model = std::make_unique<flight::AircraftModel>(
+        flight::load_aircraft_pack(flight::resolve_pack_path(o.aircraft)),
                                                     model_options(o));
     start = flight::establish_start(o.start, *model);
     if (start.trim && !start.trim->converged) {

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 namespace fedsim::flight {
 
 namespace {
@@ -11,6 +13,17 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kFt = 0.3048;
 constexpr double kKt = 1852.0 / 3600.0;
 }  // namespace
+
+std::string resolve_pack_path(const std::string& aircraft) {
+  namespace fs = std::filesystem;
+  if (fs::is_regular_file(aircraft)) return aircraft;
+  const fs::path folder = fs::path(FEDSIM_DATA_DIR) / "aircraft";
+  for (const fs::path& candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
+    if (fs::is_regular_file(candidate)) return candidate.string();
+  }
+  throw std::invalid_argument("unknown aircraft pack '" + aircraft + "': no such file, and no " +
+                              aircraft + "(.yaml) in " + folder.string());
+}
 
 void add_start_options(CLI::App& app, StartOptions& o) {
   auto* ic = app.add_option("--ic", o.ic_file, "initial-condition file (YAML)");

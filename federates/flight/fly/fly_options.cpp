@@ -58,15 +58,5 @@ AircraftModel::Options model_options(const FlyOptions& o) {
   return m;
 }
 
-std::string resolve_pack_path(const std::string& aircraft) {
-  namespace fs = std::filesystem;
-  if (fs::is_regular_file(aircraft)) return aircraft;
-  const fs::path folder = fs::path(FEDSIM_DATA_DIR) / "aircraft";
-  for (const fs::path& candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
-    if (fs::is_regular_file(candidate)) return candidate.string();
-  }
-  throw std::invalid_argument("unknown aircraft pack '" + aircraft + "': no such file, and no " +
-                              aircraft + "(.yaml) in " + folder.string());
-}
 
 }  // namespace fedsim::flight

@@ -34,8 +34,5 @@ void add_fly_options(CLI::App& app, FlyOptions& options);
 /// The model options the command line asks for.
 AircraftModel::Options model_options(const FlyOptions& options);
 
-/// A pack path as given, or a bare name ("c172", "c172.yaml") looked up in the data folder.
-/// Throws std::invalid_argument naming both places when neither exists.
-std::string resolve_pack_path(const std::string& aircraft);
 
 }  // namespace fedsim::flight
