@@ -19,18 +19,17 @@
 #include <string>
 #include <vector>
 
+#include "common/units/units.hpp"
 #include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 
 
+using namespace fedsim;
 using namespace fedsim::flight;
 using json = nlohmann::json;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kFt = 0.3048;
-constexpr double kKt = 1852.0 / 3600.0;
 
 struct Options {
   double simulated_s = 120.0;  // per measurement
@@ -46,12 +45,12 @@ struct Aircraft {
 
 std::vector<Aircraft> aircraft() {
   TrimRequest c172;
-  c172.position = {28.0 * kDeg, -90.0 * kDeg, 4000.0 * kFt};
-  c172.heading_rad = 90.0 * kDeg;
-  c172.airspeed_mps = 100.0 * kKt;
+  c172.position = {28.0 * units::kDegToRad, -90.0 * units::kDegToRad, 4000.0 * units::kFtToM};
+  c172.heading_rad = 90.0 * units::kDegToRad;
+  c172.airspeed_mps = 100.0 * units::kKtToMps;
   TrimRequest b737 = c172;
-  b737.position.alt_m = 30000.0 * kFt;
-  b737.airspeed_mps = 440.0 * kKt;
+  b737.position.alt_m = 30000.0 * units::kFtToM;
+  b737.airspeed_mps = 440.0 * units::kKtToMps;
   b737.controls.gear_down = false;
   return {{"c172", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", c172},
           {"b737", std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml", b737}};

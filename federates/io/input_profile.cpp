@@ -1,9 +1,7 @@
 #include "io/input_profile.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -11,30 +9,6 @@
 namespace fedsim::io {
 
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
-
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream in(line);
-  std::string field;
-  while (std::getline(in, field, ',')) out.push_back(trim(field));
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
-
-bool parse_number(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(out);
-}
 
 std::string join(const std::vector<std::string>& words) {
   std::string out;
@@ -53,69 +27,57 @@ InputProfile InputProfile::load_file(const std::string& path) {
 }
 
 InputProfile InputProfile::parse(const std::string& text, const std::string& origin) {
+  try {
+    std::istringstream in(text);
+    csv::CsvReader reader(in, origin);
+    return parse(reader);
+  } catch (const csv::CsvError& e) {
+    throw ProfileError(e.what());
+  }
+}
+
+InputProfile InputProfile::parse(csv::CsvReader& reader) {
   InputProfile p;
-  p.origin_ = origin;
-  std::istringstream in(text);
-  std::string raw;
-  int line_no = 0;
-  bool have_header = false;
-  int same_time_rows = 0;
-  auto fail = [&](const std::string& why) -> void {
-    throw ProfileError(origin + ":" + std::to_string(line_no) + ": " + why);
+  p.origin_ = reader.origin();
+  const auto& header = reader.header();
+  auto header_error = [&](const std::string& why) {
+    throw csv::CsvError(reader.origin(), reader.line(), why);
   };
+  if (header.empty() || header[0] != "time_s") header_error("the header must start with 'time_s'");
+  if (header.size() < 2) header_error("the header names no channel");
   std::set<Channel> driven;
-  while (std::getline(in, raw)) {
-    ++line_no;
-    const std::string line = trim(raw.substr(0, raw.find('#')));
-    if (line.empty()) continue;
-    const auto fields = split_fields(line);
-    if (!have_header) {
-      if (fields.empty() || fields[0] != "time_s") fail("the header must start with 'time_s'");
-      if (fields.size() < 2) fail("the header names no channel");
-      for (std::size_t i = 1; i < fields.size(); ++i) {
-        const auto channels = channels_named(fields[i]);
-        if (channels.empty()) {
-          fail("unknown channel '" + fields[i] + "' (known: " + join(known_channel_names()) + ")");
-        }
-        for (Channel c : channels) {
-          if (!driven.insert(c).second) fail("channel '" + fields[i] + "' is given twice");
-        }
-        p.names_.push_back(fields[i]);
-        p.targets_.push_back(channels);
-      }
-      have_header = true;
-      continue;
+  for (std::size_t i = 1; i < header.size(); ++i) {
+    const auto channels = channels_named(header[i]);
+    if (channels.empty()) {
+      header_error("unknown channel '" + header[i] + "' (known: " + join(known_channel_names()) +
+                   ")");
     }
-    if (fields.size() != p.names_.size() + 1) {
-      fail("expected " + std::to_string(p.names_.size() + 1) + " values, found " +
-           std::to_string(fields.size()));
+    for (Channel c : channels) {
+      if (!driven.insert(c).second) header_error("channel '" + header[i] + "' is given twice");
     }
-    double t = 0.0;
-    if (!parse_number(fields[0], t)) fail("time_s: '" + fields[0] + "' is not a number");
-    if (t < 0.0) fail("time_s must not be negative");
+    p.names_.push_back(header[i]);
+    p.targets_.push_back(channels);
+  }
+  int same_time_rows = 0;
+  csv::CsvRow row;
+  while (reader.next(row)) {
+    const double t = row.number(0);
+    if (t < 0.0) row.fail("time_s must not be negative");
     if (!p.times_.empty() && t < p.times_.back()) {
-      fail("time_s goes backwards (" + fields[0] + " after " + std::to_string(p.times_.back()) + ")");
+      row.fail("time_s goes backwards (" + row.text(0) + " after " +
+               std::to_string(p.times_.back()) + ")");
     }
     same_time_rows = (!p.times_.empty() && t == p.times_.back()) ? same_time_rows + 1 : 0;
-    if (same_time_rows > 1) fail("more than two rows at time " + fields[0] + " (a step needs two)");
-    std::vector<double> row;
-    for (std::size_t i = 1; i < fields.size(); ++i) {
-      double v = 0.0;
-      if (!parse_number(fields[i], v)) {
-        fail(p.names_[i - 1] + ": '" + fields[i] + "' is not a number");
-      }
+    if (same_time_rows > 1) row.fail("more than two rows at time " + row.text(0) + " (a step needs two)");
+    std::vector<double> values;
+    for (std::size_t i = 1; i < row.size(); ++i) {
       const auto& info = channel_info(p.targets_[i - 1].front());
-      if (v < info.min || v > info.max) {
-        fail(p.names_[i - 1] + ": " + fields[i] + " is outside [" + std::to_string(info.min) +
-             ", " + std::to_string(info.max) + "]");
-      }
-      row.push_back(v);
+      values.push_back(row.number_in(p.names_[i - 1], info.min, info.max));
     }
     p.times_.push_back(t);
-    p.rows_.push_back(std::move(row));
+    p.rows_.push_back(std::move(values));
   }
-  if (!have_header) throw ProfileError(origin + ": empty profile (no header line)");
-  if (p.rows_.empty()) throw ProfileError(origin + ": the profile has a header but no rows");
+  if (p.rows_.empty()) throw csv::CsvError(reader.origin(), 0, "the profile has a header but no rows");
   return p;
 }
 

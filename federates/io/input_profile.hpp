@@ -12,6 +12,7 @@
 // Validation on load: every problem is reported as "file:line: ..." and nothing is flown.
 #pragma once
 
+#include "common/csv/csv_reader.hpp"
 #include "io/input_source.hpp"
 
 #include <stdexcept>
@@ -30,6 +31,8 @@ class InputProfile : public InputSource {
   static InputProfile load_file(const std::string& path);
   /// `origin` names the text in error messages.
   static InputProfile parse(const std::string& text, const std::string& origin);
+  /// Reads a profile from an open CSV reader (throws csv::CsvError naming file and line).
+  static InputProfile parse(csv::CsvReader& reader);
 
   void sample(double sim_time_s, ControlInputs& controls) override;
   std::string describe() const override;

@@ -2,6 +2,7 @@
 // a killed federate, scripted I/O, the launcher, and network confinement. Each test uses its
 // own DDS domain so that ctest -j runs do not see each other.
 #include "common/util/child_process.hpp"
+#include "common/units/units.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
@@ -220,7 +221,7 @@ TEST(Federation, BadInputProfileStopsTheIoFederateWithFileAndLine) {
   auto io = start(dir, "io", 133, "fedsim-io", {"--profile", dir + "/bad.csv"});
   ASSERT_TRUE(io->wait(10));
   EXPECT_EQ(io->exit_code(), 2);
-  EXPECT_NE(io->output().find("bad.csv:3: elevator: 'oops' is not a number"), std::string::npos)
+  EXPECT_NE(io->output().find("bad.csv:3: column 'elevator': not a number: 'oops'"), std::string::npos)
       << io->output();
 }
 
@@ -343,8 +344,8 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   auto latest = [&] { return state_sub.latest(state); };
   ASSERT_TRUE(wait_for([&] { return latest() && state.stamp().sim_time_s() > 1.0; }, 30))
       << flight->output();
-  EXPECT_NEAR(state.altitude_msl_m(), 4000 * 0.3048, 15.0);
-  EXPECT_NEAR(state.air().tas_mps(), 100 * 1852.0 / 3600, 2.0);
+  EXPECT_NEAR(state.altitude_msl_m(), 4000 * units::kFtToM, 15.0);
+  EXPECT_NEAR(state.air().tas_mps(), 100 * units::kKtToMps, 2.0);
   ASSERT_TRUE(commands.wait_for_readers(2, std::chrono::seconds(10)));  // timing, flight
 
   msg::SimCommand fail;
@@ -357,7 +358,7 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
 
   msg::SimCommand weather;
   weather.kind(msg::COMMAND_WEATHER);
-  weather.weather().wind_from_rad(M_PI);  // a southerly wind blows north
+  weather.weather().wind_from_rad(units::kPi);  // a southerly wind blows north
   weather.weather().wind_speed_mps(10.0);
   commands.publish(weather);
   EXPECT_TRUE(wait_for([&] { return latest() && state.air().wind_ned_mps()[0] > 9.0; }, 10))
@@ -373,9 +374,9 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   ASSERT_TRUE(wait_for([&] { return latest() && state.on_ground(); }, 10)) << flight->output();
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   latest();
-  EXPECT_NEAR(state.latitude_rad() * 180 / M_PI, 37.6139, 0.002);
-  EXPECT_NEAR(state.longitude_rad() * 180 / M_PI, -122.3582, 0.002);
-  const double heading_error_deg = std::remainder(state.psi_rad() * 180 / M_PI - 298.0, 360.0);
+  EXPECT_NEAR(state.latitude_rad() * 180 / units::kPi, 37.6139, 0.002);
+  EXPECT_NEAR(state.longitude_rad() * 180 / units::kPi, -122.3582, 0.002);
+  const double heading_error_deg = std::remainder(state.psi_rad() * 180 / units::kPi - 298.0, 360.0);
   EXPECT_NEAR(heading_error_deg, 0.0, 2.0);  // aligned with runway 28R (298 deg true)
   const auto& v = state.velocity_ned_mps();
   EXPECT_LT(std::hypot(v[0], v[1], v[2]), 1.0);  // at rest (the wind still blows: TAS ~ 10 m/s)
@@ -391,8 +392,8 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
 
   send_run_state(commands, msg::RUN_STATE_RESET, 3);
   ASSERT_TRUE(wait_for([&] { return latest() && !state.on_ground() && state.stamp().sim_time_s() < 1.0; }, 10));
-  EXPECT_NEAR(state.altitude_msl_m(), 4000 * 0.3048, 15.0);
-  EXPECT_NEAR(state.latitude_rad() * 180 / M_PI, 37.6, 0.01);
+  EXPECT_NEAR(state.altitude_msl_m(), 4000 * units::kFtToM, 15.0);
+  EXPECT_NEAR(state.latitude_rad() * 180 / units::kPi, 37.6, 0.01);
 
 
   timing->terminate();

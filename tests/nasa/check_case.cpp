@@ -1,18 +1,19 @@
 // NASA atmospheric check cases on fedsim's rigid-body dynamics.
 #include "check_case.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "flight/model/environment/atmosphere.hpp"
+#include "common/atmosphere/atmosphere.hpp"
 
 namespace fedsim::flight::nasa {
 
 namespace {
-constexpr double kFt = 0.3048;
+constexpr double kFt = units::kFtToM;
 constexpr double kSlug = 14.593902937206;         // kg
 constexpr double kSlugFt2 = kSlug * kFt * kFt;    // kg m^2
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = units::kDegToRad;
 
 // Vehicle data of NASA TM-2015-218675 (section B.1 and table 4).
 constexpr double kSphereDiameterM = 0.5 * kFt;
@@ -26,7 +27,7 @@ class SphereDrag : public ForceSource {
  public:
   SphereDrag(const RigidBodyDynamics& dynamics, double drag_coefficient,
              const Eigen::Vector3d& wind_ned_mps)
-      : dynamics_(dynamics), cd_s_m2_(drag_coefficient * 0.25 * 3.14159265358979323846 *
+      : dynamics_(dynamics), cd_s_m2_(drag_coefficient * 0.25 * units::kPi *
                                       kSphereDiameterM * kSphereDiameterM),
         wind_ned_mps_(wind_ned_mps) {}
 

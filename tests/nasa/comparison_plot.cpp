@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "flight/model/math/rotation.hpp"
+#include "common/math/rotation.hpp"
 #include "nasa_channels.hpp"
 
 namespace fedsim::flight::nasa {

@@ -1,17 +1,18 @@
 // NASA atmospheric check cases through fedsim-fly.
 #include "fly_check_case.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "common/util/child_process.hpp"
-#include "flight/fly/csv_table.hpp"
+#include "common/csv/csv_reader.hpp"
 
 namespace fedsim::flight::nasa {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = units::kDegToRad;
 constexpr double kEquatorialRadiusM = 6378137.0;  // WGS-84 a, as nasa_reference.cpp
 constexpr double kDurationS = 30.0;
 }  // namespace
@@ -29,7 +30,7 @@ std::vector<FlyCheckCase> fly_check_cases() {
 }
 
 TimeHistory nasa_channels_from_fly_csv(const std::string& csv_path) {
-  const CsvTable csv = CsvTable::load(csv_path);
+  const csv::NumericTable csv = csv::NumericTable::load(csv_path);
   TimeHistory history({"altitude_m", "north_m", "east_m", "v_north_mps", "v_east_mps", "v_down_mps",
                        "phi_rad", "theta_rad", "psi_rad", "p_rps", "q_rps", "r_rps", "lat_rad",
                        "lon_rad"});

@@ -4,6 +4,7 @@
 // library alone; both compared with the envelope of NASA's simulation tools. Also tests of the
 // reference loader and the comparator themselves.
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -22,8 +23,8 @@ namespace fedsim::flight::nasa {
 namespace {
 
 const std::string kDataDir = std::string(FEDSIM_TEST_DATA_DIR) + "/nasa/";
-constexpr double kFt = 0.3048;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kFt = units::kFtToM;
+constexpr double kDeg = units::kDegToRad;
 
 // Allowed distance OUTSIDE the min/max of NASA's tools, per channel group (SI units).
 // Why not zero: the tools do not share one atmosphere. sim_04, the tool fedsim tracks most

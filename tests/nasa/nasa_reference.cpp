@@ -1,5 +1,6 @@
 // NASA check-case reference data loader.
 #include "nasa_reference.hpp"
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,14 +10,14 @@
 #include <regex>
 #include <stdexcept>
 
-#include "flight/model/environment/wgs84.hpp"
-#include "flight/model/math/rotation.hpp"
+#include "common/geodesy/wgs84.hpp"
+#include "common/math/rotation.hpp"
 
 namespace fedsim::flight::nasa {
 
 namespace {
-constexpr double kFt = 0.3048;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kFt = units::kFtToM;
+constexpr double kDeg = units::kDegToRad;
 
 struct Conversion {
   const char* nasa_column;

@@ -1,26 +1,15 @@
 // Named channels sampled over time.
 #include "time_history.hpp"
 
+#include "common/csv/csv_reader.hpp"
+#include "common/units/units.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace fedsim::flight::nasa {
-
-namespace {
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  std::string field;
-  while (std::getline(in, field, ',')) {
-    if (!field.empty() && field.back() == '\r') field.pop_back();
-    fields.push_back(field);
-  }
-  return fields;
-}
-}  // namespace
 
 TimeHistory::TimeHistory(std::vector<std::string> channels)
     : names_(std::move(channels)), values_(names_.size()) {}
@@ -70,33 +59,21 @@ double TimeHistory::interpolate(const std::string& channel_name, double t_s, boo
   if (upper == times_.end()) return v.back();
   const std::size_t i = static_cast<std::size_t>(upper - times_.begin()) - 1;
   const double f = (t_s - times_[i]) / (times_[i + 1] - times_[i]);
-  const double step = is_angle ? std::remainder(v[i + 1] - v[i], 2.0 * 3.14159265358979323846)
+  const double step = is_angle ? std::remainder(v[i + 1] - v[i], units::kTwoPi)
                               : v[i + 1] - v[i];
   return v[i] + f * step;
 }
 
 TimeHistory TimeHistory::read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header = split_csv(line);
-  if (header.empty() || header.front() != "time") {
-    throw std::runtime_error(path + ": first column must be 'time'");
-  }
+  csv::CsvReader reader = csv::CsvReader::open(path);
+  const auto& header = reader.header();
+  if (header.front() != "time") throw csv::CsvError(path, 1, "first column must be 'time'");
   TimeHistory history(std::vector<std::string>(header.begin() + 1, header.end()));
-  int line_number = 1;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.empty()) continue;
-    const std::vector<std::string> fields = split_csv(line);
-    if (fields.size() != header.size()) {
-      throw std::runtime_error(path + ":" + std::to_string(line_number) + ": expected " +
-                               std::to_string(header.size()) + " fields");
-    }
-    std::vector<double> values;
-    for (std::size_t i = 1; i < fields.size(); ++i) values.push_back(std::stod(fields[i]));
-    history.append(std::stod(fields[0]), values);
+  csv::CsvRow row;
+  std::vector<double> values(header.size() - 1);
+  while (reader.next(row)) {
+    for (std::size_t i = 1; i < row.size(); ++i) values[i - 1] = row.number(i);
+    history.append(row.number(0), values);
   }
   return history;
 }

@@ -1,4 +1,5 @@
 #include "fedsim/command_cli.hpp"
+#include "common/units/units.hpp"
 
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
@@ -17,10 +18,6 @@
 namespace fedsim::launcher {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kKt = 1852.0 / 3600.0;
-constexpr double kFt = 0.3048;
-constexpr double kNm = 1852.0;
 
 struct CommandOptions {
   runtime::ParticipantOptions dds;
@@ -164,18 +161,18 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     c.kind(msg::COMMAND_REPOSITION);
     c.target(o->target);
     auto& r = c.reposition();
-    r.airspeed_mps(o->kt * kKt);
+    r.airspeed_mps(o->kt * units::kKtToMps);
     if (lat->count() > 0) {
       r.kind(msg::REPOSITION_POINT);
-      r.latitude_rad(o->lat_deg * kDeg);
-      r.longitude_rad(o->lon_deg * kDeg);
-      r.altitude_msl_m(o->alt_ft * kFt);
-      r.heading_rad(o->heading_deg * kDeg);
+      r.latitude_rad(o->lat_deg * units::kDegToRad);
+      r.longitude_rad(o->lon_deg * units::kDegToRad);
+      r.altitude_msl_m(o->alt_ft * units::kFtToM);
+      r.heading_rad(o->heading_deg * units::kDegToRad);
     } else if (!o->airport.empty() && !o->runway.empty()) {
       r.kind(o->gate_nm > 0 ? msg::REPOSITION_APPROACH_GATE : msg::REPOSITION_RUNWAY_THRESHOLD);
       r.airport(o->airport);
       r.runway(o->runway);
-      r.gate_distance_m(o->gate_nm * kNm);
+      r.gate_distance_m(o->gate_nm * units::kNmToM);
     } else {
       std::cerr << "fedsim command reposition: give --lat/--lon/--alt-ft/--heading, or "
                    "--airport and --runway (and --gate-nm for an approach gate)\n";
@@ -201,9 +198,9 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     msg::SimCommand c;
     c.kind(msg::COMMAND_WEATHER);
     auto& w = c.weather();
-    w.wind_from_rad(o->wind_from_deg * kDeg);
-    w.wind_speed_mps(o->wind_kt * kKt);
-    w.wind_gradient_mps_per_m(o->gradient_kt_per_1000ft * kKt / (1000 * kFt));
+    w.wind_from_rad(o->wind_from_deg * units::kDegToRad);
+    w.wind_speed_mps(o->wind_kt * units::kKtToMps);
+    w.wind_gradient_mps_per_m(o->gradient_kt_per_1000ft * units::kKtToMps / (1000 * units::kFtToM));
     const std::vector<std::string> levels{"none", "light", "moderate", "severe"};
     w.turbulence_intensity(static_cast<double>(
         std::find(levels.begin(), levels.end(), o->turbulence) - levels.begin()));
@@ -211,7 +208,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     w.sea_level_temperature_offset_k(o->isa_dev_k);
     w.sea_level_pressure_pa(o->qnh_hpa * 100.0);
     w.visibility_m(o->visibility_m);
-    w.cloud_base_m(o->cloud_base_ft * kFt);
+    w.cloud_base_m(o->cloud_base_ft * units::kFtToM);
     exit_code = send(*o, c);
   });
 

@@ -1,7 +1,9 @@
 // CSV input and output of the fedsim-spline tool.
 #include "spline_csv.hpp"
 
-#include <cstdlib>
+#include "common/csv/csv_reader.hpp"
+
+#include <charconv>
 #include <istream>
 #include <ostream>
 #include <stdexcept>
@@ -9,50 +11,27 @@
 namespace fedsim::tools {
 
 namespace {
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  for (char c : line) {
-    if (c == ',' || c == ';' || c == '\t' || c == ' ' || c == '\r') {
-      if (!field.empty()) fields.push_back(field);
-      field.clear();
-    } else {
-      field += c;
-    }
-  }
-  if (!field.empty()) fields.push_back(field);
-  return fields;
-}
-
-bool parse_number(const std::string& text, double& value) {
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0';
+bool looks_numeric(const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error == std::errc() && end == text.data() + text.size();
 }
 }  // namespace
 
 XyData read_xy_csv(std::istream& in, const std::string& origin) {
+  // No fixed header: the first row is the header when it is not two numbers.
+  csv::CsvReader reader(in, origin, csv::CsvOptions{.has_header = false});
   XyData data;
-  std::string line;
-  int line_number = 0;
+  csv::CsvRow row;
   bool first_row = true;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const std::vector<std::string> fields = split_fields(line);
-    if (fields.empty() || fields[0][0] == '#') continue;
-    double x = 0.0;
-    double y = 0.0;
-    const bool numeric =
-        fields.size() >= 2 && parse_number(fields[0], x) && parse_number(fields[1], y);
-    if (!numeric && first_row && fields.size() >= 2) {
-      data.x_name = fields[0];
-      data.y_name = fields[1];
-    } else if (!numeric) {
-      throw std::runtime_error(origin + ":" + std::to_string(line_number) +
-                               ": expected two numbers, got '" + line + "'");
+  while (reader.next(row)) {
+    if (row.size() < 2) row.fail("expected two columns, got " + std::to_string(row.size()));
+    if (first_row && !looks_numeric(row.text(0))) {
+      data.x_name = row.text(0);
+      data.y_name = row.text(1);
     } else {
-      data.x.push_back(x);
-      data.y.push_back(y);
+      data.x.push_back(row.number(0));
+      data.y.push_back(row.number(1));
     }
     first_row = false;
   }

@@ -15,9 +15,9 @@ struct XyData {
   std::vector<double> y;
 };
 
-/// Parses "x,y" lines (comma, semicolon, tab or space separated). Blank lines and lines starting
-/// with '#' are skipped; a first line that is not numeric is the header. Extra columns are
-/// ignored. Throws std::runtime_error naming the line of any malformed row.
+/// Parses "x,y" rows with the common CSV reader (comma separated; blank lines and '#' comments
+/// skipped); a first row that is not numeric is the header. Extra columns are ignored. Throws
+/// csv::CsvError (a std::runtime_error) naming the file, line and column of a malformed row.
 XyData read_xy_csv(std::istream& in, const std::string& origin);
 
 /// Writes "x_name,y_name" then one "x,y" row per sample with `digits` significant figures.

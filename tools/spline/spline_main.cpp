@@ -7,15 +7,15 @@
 #include <iostream>
 #include <optional>
 
-#include "flight/model/math/cubic_spline.hpp"
+#include "common/math/cubic_spline.hpp"
 #include "spline_csv.hpp"
 
 namespace {
 
-fedsim::flight::SplineEnd end_condition(const std::string& ends, std::optional<double> slope) {
-  if (slope) return fedsim::flight::SplineEnd::clamped(*slope);
-  if (ends == "chord") return fedsim::flight::SplineEnd::chord();
-  return fedsim::flight::SplineEnd::natural();
+fedsim::SplineEnd end_condition(const std::string& ends, std::optional<double> slope) {
+  if (slope) return fedsim::SplineEnd::clamped(*slope);
+  if (ends == "chord") return fedsim::SplineEnd::chord();
+  return fedsim::SplineEnd::natural();
 }
 
 }  // namespace
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   try {
     std::ifstream in(input);
     const fedsim::tools::XyData data = fedsim::tools::read_xy_csv(in, input);
-    const fedsim::flight::CubicSpline spline(data.x, data.y, end_condition(ends, start_slope),
+    const fedsim::CubicSpline spline(data.x, data.y, end_condition(ends, start_slope),
                                              end_condition(ends, end_slope));
     const double x0 = from.value_or(data.x.front());
     const double x1 = to.value_or(data.x.back());

@@ -1,4 +1,5 @@
 #include "flight/federate/flight_adapter.hpp"
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kGradientDepthM = 600.0;  // wind grows with height up to this, then constant
 
 template <class Array>
@@ -20,7 +20,7 @@ void copy3(const Eigen::Vector3d& v, Array& out) {
 std::string describe(const TrimResult& trim) {
   std::ostringstream out;
   out << (trim.converged ? "trimmed" : "trim FAILED: " + trim.reason) << " alt_m=" << trim.altitude_m
-      << " tas_mps=" << trim.tas_mps << " alpha_deg=" << trim.alpha_rad / kDeg;
+      << " tas_mps=" << trim.tas_mps << " alpha_deg=" << trim.alpha_rad / units::kDegToRad;
   return out.str();
 }
 

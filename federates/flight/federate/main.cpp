@@ -37,7 +37,7 @@ struct FlightOptions {
 flight::AircraftModel::Options model_options(const FlightOptions& o) {
   flight::AircraftModel::Options m;
   m.earth = o.earth == "wgs84" ? flight::EarthModelKind::kWgs84 : flight::EarthModelKind::kFlat;
-  m.integrator = flight::integration_method_from_name(o.integrator);
+  m.integrator = integration_method_from_name(o.integrator);
   m.substeps = o.substeps;
   m.turbulence_seed = o.seed;
   return m;
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   // Everything that can be wrong with the input is checked before joining the federation.
   std::unique_ptr<flight::AircraftModel> model;
   flight::StartState start;
-  flight::RunwayTable runways;
+  RunwayTable runways;
   try {
     model = std::make_unique<flight::AircraftModel>(
         flight::load_aircraft_pack(flight::resolve_pack_path(o.aircraft)),
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
       std::cerr << "fedsim-flight: trim failed: " << start.trim->reason << "\n";
       return 3;
     }
-    runways = flight::RunwayTable::load_default();
+    runways = RunwayTable::load_default();
   } catch (const std::exception& e) {
     std::cerr << "fedsim-flight: " << e.what() << "\n";
     return 2;

@@ -1,6 +1,7 @@
 #include "flight/federate/start_options.hpp"
+#include "common/units/units.hpp"
 
-#include "flight/model/environment/runway_table.hpp"
+#include "common/airports/runway_table.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -9,9 +10,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kFt = 0.3048;
-constexpr double kKt = 1852.0 / 3600.0;
 }  // namespace
 
 std::string resolve_pack_path(const std::string& aircraft) {
@@ -73,17 +71,17 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
   if (o.runway_elevation_m) model.set_runway_elevation_m(*o.runway_elevation_m);
   TrimRequest request;
   request.kind = trim_kind_from_name(o.trim_kind);
-  request.position = {o.lat_deg * kDeg, o.lon_deg * kDeg, o.alt_ft * kFt};
-  request.heading_rad = o.heading_deg * kDeg;
+  request.position = {o.lat_deg * units::kDegToRad, o.lon_deg * units::kDegToRad, o.alt_ft * units::kFtToM};
+  request.heading_rad = o.heading_deg * units::kDegToRad;
   if (request.kind != TrimKind::kGround) {
     if ((o.ktas > 0) == (o.kcas > 0)) {
       throw std::invalid_argument("a flight trim needs exactly one of --ktas or --kcas");
     }
     request.airspeed_is_cas = o.kcas > 0;
-    request.airspeed_mps = (o.kcas > 0 ? o.kcas : o.ktas) * kKt;
+    request.airspeed_mps = (o.kcas > 0 ? o.kcas : o.ktas) * units::kKtToMps;
   }
-  request.flight_path_rad = o.gamma_deg * kDeg;
-  request.bank_rad = o.bank_deg * kDeg;
+  request.flight_path_rad = o.gamma_deg * units::kDegToRad;
+  request.bank_rad = o.bank_deg * units::kDegToRad;
   request.controls.flaps = o.flaps;
   request.controls.gear_down = request.kind == TrimKind::kGround;
   const TrimResult trim = Trim(model).solve(request);
@@ -99,23 +97,23 @@ std::string trim_json(const TrimResult& t) {
   if (!t.converged) j["reason"] = t.reason;
   j["kind"] = std::string(to_string(t.kind));
   j["iterations"] = t.iterations;
-  j["alpha_deg"] = t.alpha_rad / kDeg;
-  j["beta_deg"] = t.beta_rad / kDeg;
-  j["phi_deg"] = t.phi_rad / kDeg;
-  j["theta_deg"] = t.theta_rad / kDeg;
-  j["psi_deg"] = t.psi_rad / kDeg;
-  j["flight_path_deg"] = t.flight_path_rad / kDeg;
-  j["turn_rate_dps"] = t.turn_rate_radps / kDeg;
-  j["tas_kt"] = t.tas_mps / kKt;
-  j["cas_kt"] = t.cas_mps / kKt;
-  j["altitude_ft"] = t.altitude_m / kFt;
+  j["alpha_deg"] = t.alpha_rad / units::kDegToRad;
+  j["beta_deg"] = t.beta_rad / units::kDegToRad;
+  j["phi_deg"] = t.phi_rad / units::kDegToRad;
+  j["theta_deg"] = t.theta_rad / units::kDegToRad;
+  j["psi_deg"] = t.psi_rad / units::kDegToRad;
+  j["flight_path_deg"] = t.flight_path_rad / units::kDegToRad;
+  j["turn_rate_dps"] = t.turn_rate_radps / units::kDegToRad;
+  j["tas_kt"] = t.tas_mps / units::kKtToMps;
+  j["cas_kt"] = t.cas_mps / units::kKtToMps;
+  j["altitude_ft"] = t.altitude_m / units::kFtToM;
   j["elevator"] = t.controls.elevator;
   j["aileron"] = t.controls.aileron;
   j["rudder"] = t.controls.rudder;
   j["throttle"] = t.controls.throttle[0];
-  j["elevator_deg"] = t.elevator_rad / kDeg;
-  j["aileron_deg"] = t.aileron_rad / kDeg;
-  j["rudder_deg"] = t.rudder_rad / kDeg;
+  j["elevator_deg"] = t.elevator_rad / units::kDegToRad;
+  j["aileron_deg"] = t.aileron_rad / units::kDegToRad;
+  j["rudder_deg"] = t.rudder_rad / units::kDegToRad;
   j["thrust_n"] = t.total_thrust_n;
   nlohmann::json residuals;
   for (int axis = 0; axis < kTrimAxisCount; ++axis) {

@@ -1,5 +1,6 @@
 // CSV output of the batch flight program.
 #include "flight/fly/csv_recorder.hpp"
+#include "common/units/units.hpp"
 
 #include <charconv>
 #include <numbers>
@@ -8,8 +9,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
-constexpr double kKnot = 3600.0 / 1852.0;  // knots per m/s
 // 12 significant figures: 1e-5 m in ECEF, 1e-9 deg of latitude (0.1 mm); enough for the NASA
 // check cases (millimetres) and still compact.
 constexpr int kPrecision = 12;
@@ -42,8 +41,8 @@ void CsvRecorder::add(std::string name, Value value) {
 void CsvRecorder::add_standard_columns() {
   add("time_s", [](const O& o, const C&) { return o.time_s; });
   // Position.
-  add("lat_deg", [](const O& o, const C&) { return o.geodetic.lat_rad * kDeg; });
-  add("lon_deg", [](const O& o, const C&) { return o.geodetic.lon_rad * kDeg; });
+  add("lat_deg", [](const O& o, const C&) { return o.geodetic.lat_rad * units::kRadToDeg; });
+  add("lon_deg", [](const O& o, const C&) { return o.geodetic.lon_rad * units::kRadToDeg; });
   add("alt_m", [](const O& o, const C&) { return o.geodetic.alt_m; });
   add("h_agl_m", [](const O& o, const C&) { return o.height_agl_m; });
   add("north_m", [](const O& o, const C&) { return o.north_m; });
@@ -61,20 +60,20 @@ void CsvRecorder::add_standard_columns() {
   add("ground_speed_mps", [](const O& o, const C&) { return o.ground_speed_mps; });
   add("climb_rate_mps", [](const O& o, const C&) { return o.climb_rate_mps; });
   // Attitude.
-  add("phi_deg", [](const O& o, const C&) { return o.euler.phi_rad * kDeg; });
-  add("theta_deg", [](const O& o, const C&) { return o.euler.theta_rad * kDeg; });
-  add("psi_deg", [](const O& o, const C&) { return o.euler.psi_rad * kDeg; });
+  add("phi_deg", [](const O& o, const C&) { return o.euler.phi_rad * units::kRadToDeg; });
+  add("theta_deg", [](const O& o, const C&) { return o.euler.theta_rad * units::kRadToDeg; });
+  add("psi_deg", [](const O& o, const C&) { return o.euler.psi_rad * units::kRadToDeg; });
   add("q0", [](const O& o, const C&) { return o.q_ned_to_body[0]; });
   add("q1", [](const O& o, const C&) { return o.q_ned_to_body[1]; });
   add("q2", [](const O& o, const C&) { return o.q_ned_to_body[2]; });
   add("q3", [](const O& o, const C&) { return o.q_ned_to_body[3]; });
   // Rates and accelerations.
-  add("p_dps", [](const O& o, const C&) { return o.omega_b_rps.x() * kDeg; });
-  add("q_dps", [](const O& o, const C&) { return o.omega_b_rps.y() * kDeg; });
-  add("r_dps", [](const O& o, const C&) { return o.omega_b_rps.z() * kDeg; });
-  add("pdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.x() * kDeg; });
-  add("qdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.y() * kDeg; });
-  add("rdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.z() * kDeg; });
+  add("p_dps", [](const O& o, const C&) { return o.omega_b_rps.x() * units::kRadToDeg; });
+  add("q_dps", [](const O& o, const C&) { return o.omega_b_rps.y() * units::kRadToDeg; });
+  add("r_dps", [](const O& o, const C&) { return o.omega_b_rps.z() * units::kRadToDeg; });
+  add("pdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.x() * units::kRadToDeg; });
+  add("qdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.y() * units::kRadToDeg; });
+  add("rdot_dps2", [](const O& o, const C&) { return o.omega_dot_b_rps2.z() * units::kRadToDeg; });
   add("ax_mps2", [](const O& o, const C&) { return o.acceleration_b_mps2.x(); });
   add("ay_mps2", [](const O& o, const C&) { return o.acceleration_b_mps2.y(); });
   add("az_mps2", [](const O& o, const C&) { return o.acceleration_b_mps2.z(); });
@@ -86,13 +85,13 @@ void CsvRecorder::add_standard_columns() {
   add("fz_eye_mps2", [](const O& o, const C&) { return o.specific_force_eye_b_mps2.z(); });
   add("nz_g", [](const O& o, const C&) { return o.load_factor_z; });
   // Air data.
-  add("alpha_deg", [](const O& o, const C&) { return o.alpha_rad * kDeg; });
-  add("beta_deg", [](const O& o, const C&) { return o.beta_rad * kDeg; });
+  add("alpha_deg", [](const O& o, const C&) { return o.alpha_rad * units::kRadToDeg; });
+  add("beta_deg", [](const O& o, const C&) { return o.beta_rad * units::kRadToDeg; });
   add("tas_mps", [](const O& o, const C&) { return o.tas_mps; });
   add("cas_mps", [](const O& o, const C&) { return o.cas_mps; });
   add("eas_mps", [](const O& o, const C&) { return o.eas_mps; });
-  add("tas_kt", [](const O& o, const C&) { return o.tas_mps * kKnot; });
-  add("cas_kt", [](const O& o, const C&) { return o.cas_mps * kKnot; });
+  add("tas_kt", [](const O& o, const C&) { return o.tas_mps * units::kMpsToKt; });
+  add("cas_kt", [](const O& o, const C&) { return o.cas_mps * units::kMpsToKt; });
   add("mach", [](const O& o, const C&) { return o.mach; });
   add("qbar_pa", [](const O& o, const C&) { return o.qbar_pa; });
   add("static_pressure_pa", [](const O& o, const C&) { return o.static_pressure_pa; });
@@ -111,11 +110,11 @@ void CsvRecorder::add_standard_columns() {
   add("brake_left_cmd", [](const O&, const C& c) { return c.brake_left; });
   add("brake_right_cmd", [](const O&, const C& c) { return c.brake_right; });
   add("steering_cmd", [](const O&, const C& c) { return c.steering; });
-  add("elevator_deg", [](const O& o, const C&) { return o.elevator_rad * kDeg; });
-  add("aileron_deg", [](const O& o, const C&) { return o.aileron_rad * kDeg; });
-  add("rudder_deg", [](const O& o, const C&) { return o.rudder_rad * kDeg; });
+  add("elevator_deg", [](const O& o, const C&) { return o.elevator_rad * units::kRadToDeg; });
+  add("aileron_deg", [](const O& o, const C&) { return o.aileron_rad * units::kRadToDeg; });
+  add("rudder_deg", [](const O& o, const C&) { return o.rudder_rad * units::kRadToDeg; });
   add("flap_norm", [](const O& o, const C&) { return o.flap_norm; });
-  add("flap_deg", [](const O& o, const C&) { return o.flap_rad * kDeg; });
+  add("flap_deg", [](const O& o, const C&) { return o.flap_rad * units::kRadToDeg; });
   add("speedbrake_norm", [](const O& o, const C&) { return o.speedbrake_norm; });
   add("spoiler_norm", [](const O& o, const C&) { return o.spoiler_norm; });
   add("gear_norm", [](const O& o, const C&) { return o.gear_norm; });

@@ -72,15 +72,15 @@ void expect_error(const std::string& text, const std::string& needle) {
 TEST(InputProfile, MalformedProfilesNameFileAndLine) {
   expect_error("time_s,elevatr\n0,0\n", "bad.csv:1: unknown channel 'elevatr'");
   expect_error("elevator,time_s\n0,0\n", "bad.csv:1: the header must start with 'time_s'");
-  expect_error("time_s,elevator\n0,0\n1,abc\n", "bad.csv:3: elevator: 'abc' is not a number");
+  expect_error("time_s,elevator\n0,0\n1,abc\n", "bad.csv:3: column 'elevator': not a number: 'abc'");
   expect_error("time_s,elevator\n# c\n\n0,0\n2,0.1\n1,0\n", "bad.csv:6: time_s goes backwards");
-  expect_error("time_s,elevator\n0,0,1\n", "bad.csv:2: expected 2 values, found 3");
-  expect_error("time_s,throttle\n0,1.5\n", "bad.csv:2: throttle: 1.5 is outside");
+  expect_error("time_s,elevator\n0,0,1\n", "bad.csv:2: 3 fields, the header has 2");
+  expect_error("time_s,throttle\n0,1.5\n", "bad.csv:2: column 'throttle': 1.5 is outside");
   expect_error("time_s,elevator\n1,0\n1,0.1\n1,0.2\n", "bad.csv:4: more than two rows");
   expect_error("time_s,throttle,throttle2\n0,0,0\n", "bad.csv:1: channel 'throttle2' is given twice");
   expect_error("time_s,elevator\n", "bad.csv: the profile has a header but no rows");
   expect_error("time_s,elevator\n-1,0\n", "bad.csv:2: time_s must not be negative");
-  expect_error("time_s,elevator\nnan,0\n", "bad.csv:2: time_s: 'nan' is not a number");
+  expect_error("time_s,elevator\nnan,0\n", "bad.csv:2: column 'time_s': not a number: 'nan'");
 }
 
 TEST(InputProfile, MissingFileIsAClearError) {

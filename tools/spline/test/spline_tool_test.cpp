@@ -7,12 +7,12 @@
 #include <string>
 
 #include "../spline_csv.hpp"
-#include "flight/model/math/test/seed_f1tab.hpp"
+#include "common/math/test/seed_f1tab.hpp"
 
 namespace fedsim::tools {
 namespace {
 
-using flight::testing::kF1tab;  // seed section 2.9, f1tab[]
+using fedsim::testing::kF1tab;  // seed section 2.9, f1tab[]
 
 XyData run_tool(const std::string& arguments) {
   const std::string input = std::string(FEDSIM_TEST_DATA_DIR) + "/spline/table_2_5.csv";

@@ -1,5 +1,6 @@
 // The flight federate's translation between topics and the model.
 #include "flight/federate/flight_adapter.hpp"
+#include "common/units/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +51,7 @@ TEST(FlightAdapter, RelativeControlsAddPrimariesAndThrottleToTheTrim) {
 
 TEST(FlightAdapter, WeatherCommandBuildsAWindProfileAndTurbulence) {
   msg::WeatherSettings w;
-  w.wind_from_rad(M_PI / 2);
+  w.wind_from_rad(units::kPi / 2);
   w.wind_speed_mps(10.0);
   w.wind_gradient_mps_per_m(0.01);
   w.turbulence_intensity(2.0);

@@ -1,6 +1,7 @@
 // Runs the built fedsim-fly: trim JSON and CSV, exit codes for bad input and failed trims (and
 // no CSV then), input profiles absolute and relative, IC files, and bit-identical repeats.
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -12,14 +13,14 @@
 #include <vector>
 
 #include "common/util/child_process.hpp"
-#include "flight/fly/csv_table.hpp"
+#include "common/csv/csv_reader.hpp"
 
 namespace fedsim::flight {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kKt = 1852.0 / 3600.0;
+constexpr double kKt = units::kKtToMps;
 
 struct FlyRun {
   int exit_code = -1;
@@ -94,7 +95,7 @@ TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
   }
   EXPECT_EQ(trim["residuals"].size(), 6u);
 
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   ASSERT_EQ(csv.rows(), 501u);  // t = 0 and 500 frames of 20 ms
   EXPECT_DOUBLE_EQ(csv.column("time_s").front(), 0.0);
   EXPECT_NEAR(csv.column("time_s")[1], 0.02, 1e-12);
@@ -126,7 +127,7 @@ TEST_F(FedsimFly, EveryColumnNameCarriesItsUnit) {
   const std::regex unitless(
       "(q[0-3]|mach|cl|cd|cy|croll|cm|cn|stalled|wow|numerical_fault|.*_cmd|.*_norm|.*_running|"
       "gear\\d+_wow)");
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   for (const std::string& name : csv.names()) {
     EXPECT_TRUE(std::regex_match(name, with_unit) || std::regex_match(name, unitless)) << name;
   }
@@ -196,7 +197,7 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
                                              "20", "--rate", "100", "--out", out, "--quiet"}));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const double trimmed = json_of(run.output)["elevator"].get<double>();
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   const auto& t = csv.column("time_s");
   const auto& elevator = csv.column("elevator_cmd");
   const auto& q = csv.column("q_dps");
@@ -223,7 +224,7 @@ TEST_F(FedsimFly, AnAbsoluteProfileReplacesTheChannelsItDrives) {
                                     out, "--quiet"}))
                 .exit_code,
             0);
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 0.0);
   EXPECT_NEAR(csv.column("flaps_cmd")[125], 0.5, 1e-9);  // ramp: half way at 2.5 s
   EXPECT_LT(csv.column("eng1_rpm").back(), csv.column("eng1_rpm").front() - 300.0);
@@ -244,9 +245,9 @@ TEST_F(FedsimFly, StartsFromAnInitialConditionFile) {
                           "--integrator", "ab2", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.find('{'), std::string::npos);  // no trim, no JSON
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   EXPECT_NEAR(csv.column("lat_deg").front(), 45.0, 1e-9);
-  EXPECT_NEAR(csv.column("alt_m").front(), 6000.0 * 0.3048, 1e-6);
+  EXPECT_NEAR(csv.column("alt_m").front(), 6000.0 * units::kFtToM, 1e-6);
   EXPECT_NEAR(csv.column("u_mps").front(), 50.0, 1e-9);
   EXPECT_NEAR(csv.column("phi_deg").front(), 10.0, 1e-9);
   // 10 m/s of headwind on 50 m/s southward; rolled, (v, w) keep their 2 m/s.
@@ -275,7 +276,7 @@ TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
   EXPECT_TRUE(a == b) << "two runs with seed 5 differ";
   EXPECT_FALSE(a == c) << "seeds 5 and 6 gave the same turbulence";
   // And the turbulence is really there: the wind column moves.
-  const CsvTable csv = CsvTable::load(path("a.csv"));
+  const csv::NumericTable csv = csv::NumericTable::load(path("a.csv"));
   const auto& wind = csv.column("wind_d_mps");
   EXPECT_GT(
       *std::max_element(wind.begin(), wind.end()) - *std::min_element(wind.begin(), wind.end()),
@@ -288,7 +289,7 @@ TEST_F(FedsimFly, OutputEveryNthFrame) {
                                     "--out", out, "--quiet"}))
                 .exit_code,
             0);
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   EXPECT_EQ(csv.rows(), 41u);
   EXPECT_NEAR(csv.column("time_s")[1], 0.25, 1e-12);
 }
@@ -300,7 +301,7 @@ TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
            "120", "--duration", "5", "--rate", "50", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   EXPECT_EQ(csv.column("wow").back(), 1.0);
   EXPECT_GT(csv.column("alt_m").back(), 430.0);
   EXPECT_LT(csv.column("h_agl_m").back(), 3.0);
@@ -322,7 +323,7 @@ TEST_F(FedsimFly, ClimbAndTurnTrims) {
   const nlohmann::json trim = json_of(run.output);
   EXPECT_NEAR(trim["phi_deg"].get<double>(), 30.0, 1e-9);
   EXPECT_NEAR(trim["turn_rate_dps"].get<double>(),
-              9.80665 * std::tan(30.0 * M_PI / 180.0) / (100.0 * kKt) * 180.0 / M_PI, 0.05);
+              units::kStandardGravityMps2 * std::tan(30.0 * units::kPi / 180.0) / (100.0 * kKt) * 180.0 / units::kPi, 0.05);
 }
 
 }  // namespace

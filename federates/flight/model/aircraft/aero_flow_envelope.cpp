@@ -1,5 +1,6 @@
 // The flow angles an aircraft pack's aerodynamic data cover, and how the model leaves them.
 #include "flight/model/aircraft/aero_flow_envelope.hpp"
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 // The span [lo, hi] of one flow angle over the tables that read it (directly or as |angle|).
 struct Span {
@@ -38,7 +38,7 @@ void collect(const AeroLookup& lookup, Span& alpha, Span& beta) {
 double fade(double beyond_edge_rad) {
   if (!(beyond_edge_rad > 0.0)) return 1.0;
   if (beyond_edge_rad >= AeroFlowEnvelope::kTransitionRad) return 0.0;
-  const double c = std::cos(0.5 * kPi * beyond_edge_rad / AeroFlowEnvelope::kTransitionRad);
+  const double c = std::cos(0.5 * units::kPi * beyond_edge_rad / AeroFlowEnvelope::kTransitionRad);
   return c * c;
 }
 }  // namespace
@@ -51,8 +51,8 @@ AeroFlowEnvelope::AeroFlowEnvelope(const AeroModelSpec& model) {
   }
   // Caps: the weight is 0 at alpha = +-180 deg (alpha flips sign there), and at beta = +-90
   // deg whenever the coefficients depend on alpha (alpha is undefined in a sideways flow).
-  const double alpha_cap = kPi - kTransitionRad;
-  const double beta_cap = 0.5 * kPi - kTransitionRad;
+  const double alpha_cap = units::kPi - kTransitionRad;
+  const double beta_cap = 0.5 * units::kPi - kTransitionRad;
   if (alpha.found) {
     limits_alpha_ = true;
     alpha_min_rad_ = std::max(alpha.lo, -alpha_cap);
@@ -90,8 +90,8 @@ double AeroFlowEnvelope::wing_plane_incidence(double alpha_rad, double beta_rad)
 }
 
 double AeroFlowEnvelope::forward_equivalent_alpha(double alpha_rad) {
-  if (std::abs(alpha_rad) <= 0.5 * kPi) return alpha_rad;
-  return std::copysign(kPi, alpha_rad) - alpha_rad;
+  if (std::abs(alpha_rad) <= 0.5 * units::kPi) return alpha_rad;
+  return std::copysign(units::kPi, alpha_rad) - alpha_rad;
 }
 
 }  // namespace fedsim::flight

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 
 namespace fedsim::flight {
 

@@ -1,5 +1,6 @@
 // Aerodynamic coefficient build-up and wind-to-body force transformation (seed 3.3-3.5).
 #include "flight/model/aircraft/aerodynamics.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +8,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 double flap_travel_of(const AircraftPack& pack) {
   return pack.flight_controls.flaps ? pack.flight_controls.flaps->full_travel_rad : 0.0;
@@ -21,7 +21,7 @@ Aerodynamics::Aerodynamics(const AeroModelSpec& model, const ReferenceGeometry& 
                            double flap_full_travel_rad)
     : model_(model),
       geometry_(geometry),
-      flap_full_travel_deg_(flap_full_travel_rad * kRadToDeg),
+      flap_full_travel_deg_(flap_full_travel_rad * units::kRadToDeg),
       envelope_(model_) {
   if (model_.factors.size() > AeroModelSpec::kMaxFactors) {
     throw std::invalid_argument("Aerodynamics: too many factors");

@@ -1,6 +1,7 @@
 // The aircraft executive: sub-models evaluated in one fixed order, forces and moments moved to
 // the CG, the rigid body integrated.
 #include "flight/model/aircraft/aircraft_model.hpp"
+#include "common/units/units.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 #include <algorithm>
@@ -11,15 +12,12 @@
 #include <string>
 
 #include "flight/model/aircraft/pack_to_systems.hpp"
-#include "flight/model/environment/airspeed.hpp"
-#include "flight/model/environment/altimetry.hpp"
+#include "common/atmosphere/airspeed.hpp"
+#include "common/atmosphere/altimetry.hpp"
 
 namespace fedsim::flight {
 
 namespace {
-constexpr double kG0 = 9.80665;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-constexpr double kFeetToMetres = 0.3048;
 /// The equations of motion take new mass properties when the mass has changed by this
 /// fraction: a fuel-burn step changes it by ~1e-7, and each update validates the tensor (an
 /// eigen-decomposition). The CG used for the moment arms is always the current one.
@@ -414,17 +412,17 @@ TrimResult AircraftModel::reposition_to_approach_gate(const Runway& runway, doub
                                                       double tas_mps, double glide_path_rad) {
   // The gate lies distance_m back along the centreline (geodesic, WGS-84), on the glide path
   // through the 50 ft threshold crossing height (ICAO Annex 14 / PANS-OPS reference datum).
-  constexpr double kThresholdCrossingHeightM = 50.0 * kFeetToMetres;
+  constexpr double kThresholdCrossingHeightM = 50.0 * units::kFtToM;
   double lat_deg = 0.0, lon_deg = 0.0;
-  const double back_azimuth_deg = runway.heading_rad * kRadToDeg + 180.0;
-  GeographicLib::Geodesic::WGS84().Direct(runway.threshold.lat_rad * kRadToDeg,
-                                          runway.threshold.lon_rad * kRadToDeg, back_azimuth_deg,
+  const double back_azimuth_deg = runway.heading_rad * units::kRadToDeg + 180.0;
+  GeographicLib::Geodesic::WGS84().Direct(runway.threshold.lat_rad * units::kRadToDeg,
+                                          runway.threshold.lon_rad * units::kRadToDeg, back_azimuth_deg,
                                           distance_m, lat_deg, lon_deg);
   set_runway_elevation_m(runway.threshold.alt_m);
   TrimRequest request;
   request.kind = TrimKind::kClimb;
-  request.position.lat_rad = lat_deg / kRadToDeg;
-  request.position.lon_rad = lon_deg / kRadToDeg;
+  request.position.lat_rad = lat_deg / units::kRadToDeg;
+  request.position.lon_rad = lon_deg / units::kRadToDeg;
   request.position.alt_m =
       runway.threshold.alt_m + kThresholdCrossingHeightM + distance_m * std::tan(glide_path_rad);
   request.heading_rad = runway.heading_rad;
@@ -836,7 +834,7 @@ void AircraftModel::fill_outputs() {
   o.specific_force_cg_b_mps2 = e.accelerations.specific_force_b_mps2;
   o.specific_force_eye_b_mps2 = RigidBodyDynamics::specific_force_at_b(
       e.accelerations, state.omega_b_rps, pack_.geometry.pilot_eye_point_m - mass.cg_m);
-  o.load_factor_z = -o.specific_force_cg_b_mps2.z() / kG0;
+  o.load_factor_z = -o.specific_force_cg_b_mps2.z() / units::kStandardGravityMps2;
 
   o.tas_mps = e.tas_mps;
   o.cas_mps = cas_from_tas_mps(e.tas_mps, e.air);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include "common/units/units.hpp"
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -18,9 +19,9 @@
 #include "flight/model/aircraft/trim.hpp"
 #include "flight/model/aircraft/weather_settings.hpp"
 #include "flight/model/dynamics/rigid_body_dynamics.hpp"
-#include "flight/model/environment/atmosphere.hpp"
-#include "flight/model/math/integration_method.hpp"
-#include "flight/model/math/integrator.hpp"
+#include "common/atmosphere/atmosphere.hpp"
+#include "common/math/integration_method.hpp"
+#include "common/math/integrator.hpp"
 #include "flight/model/systems/actuator.hpp"
 #include "flight/model/systems/landing_gear.hpp"
 #include "flight/model/systems/mass_balance.hpp"
@@ -79,7 +80,7 @@ class AircraftModel {
     AeroRates aero_rates = AeroRates::kAirMass;
     /// The terrain: a level plane at this height above MSL (m).
     double runway_elevation_m = 0.0;
-    double flat_earth_gravity_mps2 = 9.80665;
+    double flat_earth_gravity_mps2 = units::kStandardGravityMps2;
 
     /// Throws std::invalid_argument naming the bad field.
     void validate() const;
@@ -133,7 +134,7 @@ class AircraftModel {
   /// glide_path_rad (3 deg) through 50 ft over the threshold, established in a steady descent
   /// at the true airspeed with the current flaps and gear.
   TrimResult reposition_to_approach_gate(const Runway& runway, double distance_m, double tas_mps,
-                                         double glide_path_rad = 3.0 * 3.14159265358979323846 /
+                                         double glide_path_rad = 3.0 * units::kPi /
                                                                  180.0);
 
   // ---- Environment and failures -------------------------------------------------------------

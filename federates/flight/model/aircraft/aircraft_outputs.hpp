@@ -8,8 +8,8 @@
 
 #include "flight/model/aircraft/aerodynamics.hpp"
 #include "flight/model/aircraft/pack_propulsion.hpp"
-#include "flight/model/environment/wgs84.hpp"
-#include "flight/model/math/rotation.hpp"
+#include "common/geodesy/wgs84.hpp"
+#include "common/math/rotation.hpp"
 
 namespace fedsim::flight {
 

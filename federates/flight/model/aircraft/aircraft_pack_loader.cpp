@@ -1,5 +1,6 @@
 // Aircraft-pack loader: top level, metadata, geometry, mass, limits (data/aircraft/README.md).
 #include <Eigen/Eigenvalues>
+#include "common/units/units.hpp"
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
@@ -16,7 +17,6 @@ namespace {
 using namespace pack_detail;
 
 constexpr int kFormatVersion = 1;
-constexpr double kKnotToMps = 1852.0 / 3600.0;
 
 PackMetadata read_metadata(const ConfigNode& node) {
   node.reject_unknown_keys({"name", "source", "description", "notes"});
@@ -141,7 +141,7 @@ LimitsSpec read_limits(const ConfigNode& node) {
   }
   l.load_factor_min = optional_number(node, "load_factor_min", -20.0, 0.0);
   l.load_factor_max = optional_number(node, "load_factor_max", 0.0, 20.0);
-  l.never_exceed_cas_mps = optional_number(node, "never_exceed_cas_kt", 1.0, 5000.0, kKnotToMps);
+  l.never_exceed_cas_mps = optional_number(node, "never_exceed_cas_kt", 1.0, 5000.0, units::kKtToMps);
   l.max_mass_kg = optional_number(node, "max_mass_kg", 0.0, 1e7);
   return l;
 }

@@ -1,5 +1,6 @@
 // Initial conditions: validation and the strict YAML initial-condition file reader.
 #include "flight/model/aircraft/initial_conditions.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -13,8 +14,6 @@ namespace fedsim::flight {
 namespace {
 using util::ConfigNode;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr double kFeetToMetres = 0.3048;
 constexpr int kFormatVersion = 1;
 
 void require_finite(const Eigen::Vector3d& v, const char* field) {
@@ -35,10 +34,10 @@ std::string one_of(const ConfigNode& node, const std::string& a, const std::stri
 GeodeticPosition read_position(const ConfigNode& node) {
   node.reject_unknown_keys({"lat_deg", "lon_deg", "alt_m", "alt_ft"});
   GeodeticPosition p;
-  p.lat_rad = node.number("lat_deg", -90.0, 90.0) * kDegToRad;
-  p.lon_rad = node.number("lon_deg", -180.0, 360.0) * kDegToRad;
+  p.lat_rad = node.number("lat_deg", -90.0, 90.0) * units::kDegToRad;
+  p.lon_rad = node.number("lon_deg", -180.0, 360.0) * units::kDegToRad;
   const std::string alt_key = one_of(node, "alt_m", "alt_ft");
-  const double scale = alt_key == "alt_m" ? 1.0 : kFeetToMetres;
+  const double scale = alt_key == "alt_m" ? 1.0 : units::kFtToM;
   p.alt_m = node.number(alt_key, -1000.0 / scale, 100000.0 / scale) * scale;
   return p;
 }
@@ -46,9 +45,9 @@ GeodeticPosition read_position(const ConfigNode& node) {
 EulerAngles read_attitude(const ConfigNode& node) {
   node.reject_unknown_keys({"phi", "theta", "psi"});
   EulerAngles a;
-  a.phi_rad = node.number_or("phi", 0.0, -180.0, 180.0) * kDegToRad;
-  a.theta_rad = node.number_or("theta", 0.0, -90.0, 90.0) * kDegToRad;
-  a.psi_rad = node.number_or("psi", 0.0, -360.0, 360.0) * kDegToRad;
+  a.phi_rad = node.number_or("phi", 0.0, -180.0, 180.0) * units::kDegToRad;
+  a.theta_rad = node.number_or("theta", 0.0, -90.0, 90.0) * units::kDegToRad;
+  a.psi_rad = node.number_or("psi", 0.0, -360.0, 360.0) * units::kDegToRad;
   return a;
 }
 
@@ -107,7 +106,7 @@ WindProfile::Params read_wind(const ConfigNode& node) {
     }
     wind.altitude_m.push_back(alt_m);
     wind.speed_mps.push_back(layer.number("speed_mps", 0.0, 200.0));
-    wind.from_direction_rad.push_back(layer.number("from_deg", 0.0, 360.0) * kDegToRad);
+    wind.from_direction_rad.push_back(layer.number("from_deg", 0.0, 360.0) * units::kDegToRad);
   }
   return wind;
 }
@@ -178,7 +177,7 @@ InitialConditionFile read_file(const ConfigNode& root) {
   if (root.has("attitude_deg")) ic.attitude = read_attitude(root.child("attitude_deg"));
   if (root.has("body_rates_dps")) {
     const std::vector<double> w = root.numbers("body_rates_dps", 3);
-    ic.omega_b_rps = Eigen::Vector3d(w[0], w[1], w[2]) * kDegToRad;
+    ic.omega_b_rps = Eigen::Vector3d(w[0], w[1], w[2]) * units::kDegToRad;
   }
   ic.omega_relative_to_earth =
       root.choice_or("body_rates_relative_to", {"earth", "inertial"}, "earth") == "earth";

@@ -9,8 +9,8 @@
 
 #include "flight/model/aircraft/aircraft_controls.hpp"
 #include "flight/model/aircraft/weather_settings.hpp"
-#include "flight/model/environment/wgs84.hpp"
-#include "flight/model/math/rotation.hpp"
+#include "common/geodesy/wgs84.hpp"
+#include "common/math/rotation.hpp"
 
 namespace fedsim::flight {
 

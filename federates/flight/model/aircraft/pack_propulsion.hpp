@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 
 namespace fedsim::flight {
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/units/units.hpp"
 #include "common/util/config_node.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
 
@@ -12,7 +13,6 @@ namespace fedsim::flight::pack_detail {
 
 using util::ConfigNode;
 
-inline constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 /// A required [x, y, z] list of three numbers.
 Eigen::Vector3d read_vector3(const ConfigNode& parent, const std::string& key);

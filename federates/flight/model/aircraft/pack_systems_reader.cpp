@@ -17,8 +17,8 @@ SurfaceActuatorSpec read_surface(const ConfigNode& node) {
                             "min_deflection_deg", "max_deflection_deg", "time_constant_s",
                             "rate_limit_deg_per_s"});
   SurfaceActuatorSpec s;
-  s.deflection_at_plus_one_rad = node.number("deflection_at_plus_one_deg", -90, 90) * kDegToRad;
-  s.deflection_at_minus_one_rad = node.number("deflection_at_minus_one_deg", -90, 90) * kDegToRad;
+  s.deflection_at_plus_one_rad = node.number("deflection_at_plus_one_deg", -90, 90) * units::kDegToRad;
+  s.deflection_at_minus_one_rad = node.number("deflection_at_minus_one_deg", -90, 90) * units::kDegToRad;
   const double plus = s.deflection_at_plus_one_rad;
   const double minus = s.deflection_at_minus_one_rad;
   if (plus * minus > 0.0 || (plus == 0.0 && minus == 0.0)) {
@@ -27,13 +27,13 @@ SurfaceActuatorSpec read_surface(const ConfigNode& node) {
   }
   const double low = std::min(plus, minus);
   const double high = std::max(plus, minus);
-  s.min_deflection_rad = node.number_or("min_deflection_deg", low / kDegToRad, -90, 0) * kDegToRad;
-  s.max_deflection_rad = node.number_or("max_deflection_deg", high / kDegToRad, 0, 90) * kDegToRad;
+  s.min_deflection_rad = node.number_or("min_deflection_deg", low / units::kDegToRad, -90, 0) * units::kDegToRad;
+  s.max_deflection_rad = node.number_or("max_deflection_deg", high / units::kDegToRad, 0, 90) * units::kDegToRad;
   if (!(s.min_deflection_rad < s.max_deflection_rad)) {
     node.fail_at("max_deflection_deg", "must exceed min_deflection_deg");
   }
   s.time_constant_s = node.number_or("time_constant_s", 0.0, 0.0, 10.0);
-  s.rate_limit_radps = node.number_or("rate_limit_deg_per_s", 0.0, 0.0, 1000.0) * kDegToRad;
+  s.rate_limit_radps = node.number_or("rate_limit_deg_per_s", 0.0, 0.0, 1000.0) * units::kDegToRad;
   return s;
 }
 
@@ -52,7 +52,7 @@ KinematicSurfaceSpec read_kinematic(const ConfigNode& node, bool allow_travel) {
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (k.transit_times_s[i] < 0.0) times[i].fail("a transit time cannot be negative");
   }
-  if (allow_travel) k.full_travel_rad = node.number_or("full_travel_deg", 0.0, 0.0, 90.0) * kDegToRad;
+  if (allow_travel) k.full_travel_rad = node.number_or("full_travel_deg", 0.0, 0.0, 90.0) * units::kDegToRad;
   return k;
 }
 
@@ -99,7 +99,7 @@ void read_propeller_coefficient(const ConfigNode& node, const std::string& key, 
   if (node.child(key).has("column")) {
     const Table2D deg = read_table_2d(node, key, "advance_ratio", "blade_pitch_deg");
     std::vector<double> pitch_rad = deg.cols();
-    for (double& p : pitch_rad) p *= kDegToRad;
+    for (double& p : pitch_rad) p *= units::kDegToRad;
     variable = Table2D(deg.rows(), pitch_rad, deg.values());
   } else {
     fixed = read_table_1d(node, key, "advance_ratio");
@@ -116,8 +116,8 @@ PropellerSpec read_propeller(const ConfigNode& node) {
   p.blade_count = node.integer("blade_count", 1, 12);
   p.inertia_kgm2 = node.number("inertia_kgm2", 1e-6, 1e4);
   p.gear_ratio = node.number_or("gear_ratio", 1.0, 0.05, 20.0);
-  p.min_pitch_rad = node.number("min_pitch_deg", -90.0, 90.0) * kDegToRad;
-  p.max_pitch_rad = node.number("max_pitch_deg", -90.0, 90.0) * kDegToRad;
+  p.min_pitch_rad = node.number("min_pitch_deg", -90.0, 90.0) * units::kDegToRad;
+  p.max_pitch_rad = node.number("max_pitch_deg", -90.0, 90.0) * units::kDegToRad;
   if (p.max_pitch_rad < p.min_pitch_rad) node.fail_at("max_pitch_deg", "below min_pitch_deg");
   p.spin_sense = node.integer("spin_sense", -1, 1);
   if (p.spin_sense == 0) node.fail_at("spin_sense", "must be +1 or -1");
@@ -179,7 +179,7 @@ EngineSpec read_engine(const ConfigNode& node, std::size_t tank_count) {
   }
   e.name = node.string("name");
   e.position_m = read_vector3(node, "position_m");
-  if (node.has("orientation_deg")) e.orientation_rad = read_vector3(node, "orientation_deg") * kDegToRad;
+  if (node.has("orientation_deg")) e.orientation_rad = read_vector3(node, "orientation_deg") * units::kDegToRad;
   {
     const auto items = node.child("fuel_tanks").items();
     if (items.empty()) node.fail_at("fuel_tanks", "an engine needs at least one fuel tank");
@@ -217,7 +217,7 @@ GearContactSpec read_contact(const ConfigNode& node) {
   c.static_friction = node.number("static_friction", 0.0, 5.0);
   c.dynamic_friction = node.number("dynamic_friction", 0.0, 5.0);
   c.rolling_friction = node.number_or("rolling_friction", 0.0, 0.0, 5.0);
-  c.max_steer_rad = node.number_or("max_steer_deg", 0.0, 0.0, 180.0) * kDegToRad;
+  c.max_steer_rad = node.number_or("max_steer_deg", 0.0, 0.0, 180.0) * units::kDegToRad;
   const std::string brake = node.choice_or("brake_group", {"none", "left", "right"}, "none");
   c.brake_group = brake == "left"    ? BrakeGroup::left
                   : brake == "right" ? BrakeGroup::right

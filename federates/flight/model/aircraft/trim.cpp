@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "flight/model/aircraft/aircraft_model.hpp"
-#include "flight/model/environment/airspeed.hpp"
-#include "flight/model/environment/wind_profile.hpp"
+#include "common/atmosphere/airspeed.hpp"
+#include "flight/model/weather/wind_profile.hpp"
 
 namespace fedsim::flight {
 

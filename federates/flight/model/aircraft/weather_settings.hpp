@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <optional>
 
-#include "flight/model/environment/atmosphere.hpp"
-#include "flight/model/environment/turbulence.hpp"
-#include "flight/model/environment/wind_profile.hpp"
-#include "flight/model/environment/wind_shear.hpp"
+#include "common/atmosphere/atmosphere.hpp"
+#include "flight/model/weather/turbulence.hpp"
+#include "flight/model/weather/wind_profile.hpp"
+#include "flight/model/weather/wind_shear.hpp"
 
 namespace fedsim::flight {
 

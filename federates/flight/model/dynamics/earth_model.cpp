@@ -1,5 +1,6 @@
 // Flat and rotating WGS-84 earth models for the equations of motion.
 #include "flight/model/dynamics/earth_model.hpp"
+#include "common/units/units.hpp"
 
 #include <Eigen/Geometry>
 
@@ -9,7 +10,7 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kMaxOriginLatRad = 89.9 * 3.14159265358979323846 / 180.0;
+constexpr double kMaxOriginLatRad = 89.9 * units::kPi / 180.0;
 }  // namespace
 
 EarthModel::EarthModel(EarthModelConfig config) : config_(config) {

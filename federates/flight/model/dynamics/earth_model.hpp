@@ -2,8 +2,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include "common/units/units.hpp"
 
-#include "flight/model/environment/wgs84.hpp"
+#include "common/geodesy/wgs84.hpp"
 
 namespace fedsim::flight {
 
@@ -19,7 +20,7 @@ enum class EarthModelKind {
 
 struct EarthModelConfig {
   EarthModelKind kind = EarthModelKind::kWgs84;
-  double flat_gravity_mps2 = 9.80665;  // flat earth only
+  double flat_gravity_mps2 = units::kStandardGravityMps2;  // flat earth only
   double origin_lat_rad = 0.0;         // flat earth only: where the NED frame is pinned
   double origin_lon_rad = 0.0;
 };

@@ -3,7 +3,7 @@
 
 #include "flight/model/dynamics/force_source.hpp"
 #include "flight/model/dynamics/rigid_body_dynamics.hpp"
-#include "flight/model/math/integrator.hpp"
+#include "common/math/integrator.hpp"
 
 #include <optional>
 

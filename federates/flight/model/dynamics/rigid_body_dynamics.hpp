@@ -3,11 +3,11 @@
 
 #include <Eigen/Core>
 
-#include "flight/model/math/integration_method.hpp"
+#include "common/math/integration_method.hpp"
 #include "flight/model/dynamics/earth_model.hpp"
 #include "flight/model/dynamics/mass_properties.hpp"
 #include "flight/model/dynamics/rigid_body_state.hpp"
-#include "flight/model/math/rotation.hpp"
+#include "common/math/rotation.hpp"
 
 namespace fedsim::flight {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 
 namespace fedsim::flight::param_checks {
 

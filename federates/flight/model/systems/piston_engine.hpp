@@ -1,7 +1,7 @@
 // Naturally aspirated piston engine: manifold pressure, shaft torques, power and fuel flow.
 #pragma once
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 
 namespace fedsim::flight {
 

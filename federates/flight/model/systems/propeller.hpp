@@ -2,7 +2,7 @@
 // and blade angle.
 #pragma once
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 
 namespace fedsim::flight {
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 #include "flight/model/systems/thrust_line.hpp"
 
 namespace fedsim::flight {

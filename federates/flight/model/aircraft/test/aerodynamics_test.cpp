@@ -2,6 +2,7 @@
 // stability-derivative signs, force directions, NASA brick damping moments, hysteresis, CL^2,
 // and the flow beyond the packs' data (tailwind, crosswind, flat fall).
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -18,7 +19,7 @@
 namespace fedsim::flight {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 AircraftPack pack(const std::string& name) {
@@ -78,7 +79,7 @@ TEST(Aerodynamics, C172StaticAndDynamicStability) {
   const auto alpha = coefficients([&](auto& in) { in.alpha_rad += h; });
   const auto de = coefficients([&](auto& in) { in.elevator_rad = h; });
   const auto beta = coefficients([&](auto& in) { in.beta_rad = h; });
-  const double b_2v = 36.0 * 0.3048 / (2.0 * 50.0);
+  const double b_2v = 36.0 * units::kFtToM / (2.0 * 50.0);
   const auto p = coefficients([&](auto& in) { in.omega_air_b.x() = h / b_2v; });
   const auto r = coefficients([&](auto& in) { in.omega_air_b.z() = h / b_2v; });
 
@@ -133,7 +134,7 @@ TEST(Aerodynamics, LiftActsUpAndDragOpposesTheAirVelocity) {
   // Lift is perpendicular to the velocity, in the plane of symmetry.
   const Eigen::Vector3d lift_dir(std::sin(alpha), 0.0, -std::cos(alpha));
   EXPECT_NEAR(out.force_b.dot(lift_dir), out.lift_n, 1e-9 * out.lift_n);
-  EXPECT_NEAR(out.lift_n, in.qbar_pa * 174.0 * 0.3048 * 0.3048 * out.CL, 1e-6);
+  EXPECT_NEAR(out.lift_n, in.qbar_pa * 174.0 * units::kFtToM * units::kFtToM * out.CL, 1e-6);
 }
 
 TEST(Aerodynamics, SphereDragIsExactlyAgainstTheVelocity) {
@@ -144,7 +145,7 @@ TEST(Aerodynamics, SphereDragIsExactlyAgainstTheVelocity) {
   const auto out = aero.evaluate(in);
   const Eigen::Vector3d v_hat(std::cos(alpha) * std::cos(beta), std::sin(beta),
                               std::sin(alpha) * std::cos(beta));
-  const double drag = in.qbar_pa * 0.1963495 * 0.3048 * 0.3048 * 0.1;
+  const double drag = in.qbar_pa * 0.1963495 * units::kFtToM * units::kFtToM * 0.1;
   EXPECT_NEAR((out.force_b + drag * v_hat).norm(), 0.0, 1e-9 * drag);
   EXPECT_DOUBLE_EQ(out.moment_b.norm(), 0.0);
 }
@@ -203,7 +204,7 @@ TEST(Aerodynamics, C172GroundEffectScalesTheLiftTerms) {
   Aerodynamics aero(pack("c172.yaml"));
   Aerodynamics::Inputs in = cruise(0.0);  // CLalpha term is zero at alpha 0
   const double free_air = aero.compute(in, false).CL;
-  in.aero_rp_height_agl_m = 0.1 * 36.0 * 0.3048;  // h/b = 0.1: factor 1.127
+  in.aero_rp_height_agl_m = 0.1 * 36.0 * units::kFtToM;  // h/b = 0.1: factor 1.127
   EXPECT_NEAR(aero.compute(in, false).CL, 1.127 * free_air, 1e-12);
 }
 

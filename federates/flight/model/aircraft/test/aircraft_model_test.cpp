@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "flight/model/aircraft/test/flight_test_support.hpp"
-#include "flight/model/environment/airspeed.hpp"
+#include "common/atmosphere/airspeed.hpp"
 
 namespace fedsim::flight {
 namespace {

@@ -1,6 +1,7 @@
 // Tests of the aircraft-pack loader: the shipped packs load with the JSBSim/NASA figures
 // converted to SI, and every deliberately broken pack fails at the right file, line and field.
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -17,11 +18,11 @@ namespace fs = std::filesystem;
 
 // Unit factors, written out so the test does not share the loader's constants.
 constexpr double kIn = 0.0254;
-constexpr double kFt = 0.3048;
+constexpr double kFt = units::kFtToM;
 constexpr double kLb = 0.45359237;
 constexpr double kSlugFt2 = 14.5939029372 * kFt * kFt;
 constexpr double kLbfPerFtToNPerM = 4.4482216152605 / kFt;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = units::kDegToRad;
 
 std::string data_pack(const std::string& name) {
   return std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include "common/units/units.hpp"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -15,11 +16,11 @@
 
 namespace fedsim::flight::testing {
 
-inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kPi = units::kPi;
 inline constexpr double kDeg = kPi / 180.0;
-inline constexpr double kFt = 0.3048;
-inline constexpr double kKt = 1852.0 / 3600.0;
-inline constexpr double kG0 = 9.80665;
+inline constexpr double kFt = units::kFtToM;
+inline constexpr double kKt = units::kKtToMps;
+inline constexpr double kG0 = units::kStandardGravityMps2;
 
 inline AircraftPack load_pack(const std::string& name) {
   return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);

@@ -1,6 +1,7 @@
 // The initial-condition file: every field read with its unit, and errors that point at the
 // file, line and field.
 #include "flight/model/aircraft/initial_conditions.hpp"
+#include "common/units/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@
 namespace fedsim::flight {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = units::kDegToRad;
 
 const char* kFull = R"(fedsim_initial_conditions: 1
 position: {lat_deg: 28.5, lon_deg: -80.6, alt_ft: 4000}

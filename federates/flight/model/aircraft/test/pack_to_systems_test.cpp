@@ -1,6 +1,7 @@
 // Tests that the shipped packs fill the systems models' Params and that the models built from
 // them reproduce pack figures (loaded mass, static thrust, surface travel).
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <array>
 #include <cmath>
@@ -13,7 +14,7 @@ namespace {
 
 constexpr double kLb = 0.45359237;
 constexpr double kLbf = 4.4482216152605;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = units::kDegToRad;
 
 AircraftPack pack(const std::string& name) {
   return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);

@@ -1,5 +1,6 @@
 // Tests of the rigid-body equations of motion: invariants, analytic solutions, round trips.
 #include "flight/model/dynamics/rigid_body.hpp"
+#include "common/units/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@
 namespace fedsim::flight {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 class NoForces : public ForceSource {

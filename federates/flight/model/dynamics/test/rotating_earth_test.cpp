@@ -1,5 +1,6 @@
 // Tests of the rigid body on the rotating WGS-84 earth against an independent inertial solution.
 #include <gtest/gtest.h>
+#include "common/units/units.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -9,7 +10,7 @@
 namespace fedsim::flight {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 class NoForces : public ForceSource {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "common/util/allocation_counter.hpp"
-#include "flight/model/environment/turbulence.hpp"
-#include "flight/model/environment/wind_profile.hpp"
-#include "flight/model/environment/wind_shear.hpp"
+#include "flight/model/weather/turbulence.hpp"
+#include "flight/model/weather/wind_profile.hpp"
+#include "flight/model/weather/wind_shear.hpp"
 #include "flight/model/systems/actuator.hpp"
 #include "flight/model/systems/test/reference_data.hpp"
 

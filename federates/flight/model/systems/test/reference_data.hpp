@@ -13,7 +13,7 @@
 #include <numbers>
 #include <vector>
 
-#include "flight/model/math/interpolation.hpp"
+#include "common/math/interpolation.hpp"
 #include "flight/model/systems/landing_gear.hpp"
 #include "flight/model/systems/mass_balance.hpp"
 #include "flight/model/systems/piston_powerplant.hpp"

@@ -1,0 +1,224 @@
+// A federate's simulation side, independent of how it is hosted: the ports it reads and writes
+// (declared once, at the top of its adapter), the commands it takes and the step it runs each
+// frame. The same component runs
+//   - as a DDS federate (runtime::Federate: one process, readers and writers on the ports), or
+//   - in-process (runtime::Composition: several components in one process, no DDS, with the
+//     frame order of a lockstep federation).
+// Nothing here creates a DDS entity; hosts bind the ports (PortBinder).
+//
+// Frame rule (both hosts): in frame N an Input holds what was written in frame N-1 (lockstep
+// inputs; in realtime over DDS, the newest sample) and an Output's samples are stamped N.
+#pragma once
+
+#include "common/runtime/topic_catalogue.hpp"
+
+#include <spdlog/logger.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fedsim::runtime {
+
+/// What a step needs to know about the frame it computes.
+struct FrameContext {
+  std::uint64_t frame = 0;       // tick number
+  std::uint64_t sim_frame = 0;   // RUN frames since the last reset
+  double sim_time_s = 0.0;       // simulation time at the start of the frame [s]
+  double dt_s = 0.0;             // simulation step of this frame [s] (0 when frozen)
+  double frame_period_s = 0.0;   // nominal frame period [s]
+  msg::RunState run_state = msg::RUN_STATE_FREEZE;
+  std::uint32_t reset_count = 0;
+  msg::TimingMode mode = msg::TIMING_MODE_REALTIME;
+
+  bool running() const { return run_state == msg::RUN_STATE_RUN; }
+  bool resetting() const { return run_state == msg::RUN_STATE_RESET; }
+  msg::FrameStamp stamp() const {
+    msg::FrameStamp s;
+    s.frame(frame);
+    s.sim_time_s(sim_time_s);
+    return s;
+  }
+};
+
+enum class PortDirection { kRead, kWrite };
+
+/// A port as the graph and the hosts see it.
+struct PortInfo {
+  const TopicInfo* topic = nullptr;
+  PortDirection direction = PortDirection::kRead;
+  std::string qos;              // QoS profile this port uses
+  bool lockstep_input = false;  // reads: frame N waits for the frame N-1 sample in lockstep
+};
+
+template <class T>
+class Input;
+template <class T>
+class Output;
+
+// The message types a port can carry (the catalogue's). A host implements one bind() per type
+// and direction, so that the component layer needs no DDS template.
+#define FEDSIM_PORT_MESSAGE_TYPES(X) \
+  X(FrameTick)                       \
+  X(FrameDone)                       \
+  X(SimCommand)                      \
+  X(FederateStatus)                  \
+  X(PilotControls)                   \
+  X(AircraftState)                   \
+  X(EngineState)                     \
+  X(NavigationState)                 \
+  X(MotionPlatformState)             \
+  X(ControlLoadingState)             \
+  X(VisualChannelStatus)
+
+class PortBinder {
+ public:
+  virtual ~PortBinder() = default;
+#define FEDSIM_DECLARE_BIND(Msg)                       \
+  virtual void bind(Input<msg::Msg>& port) = 0;        \
+  virtual void bind(Output<msg::Msg>& port) = 0;
+  FEDSIM_PORT_MESSAGE_TYPES(FEDSIM_DECLARE_BIND)
+#undef FEDSIM_DECLARE_BIND
+};
+
+class PortBase {
+ public:
+  explicit PortBase(PortInfo info) : info_(std::move(info)) {}
+  virtual ~PortBase() = default;
+  const PortInfo& info() const { return info_; }
+  const std::string& topic_name() const { return info_.topic->name; }
+  virtual void bind(PortBinder& binder) = 0;
+
+ protected:
+  PortInfo info_;
+};
+
+/// A read port. The host refreshes it before every step.
+template <class T>
+class Input final : public PortBase {
+ public:
+  using PortBase::PortBase;
+  /// The sample this frame reads, or nullptr while none has arrived.
+  const T* latest() const { return valid_ ? &value_ : nullptr; }
+  /// Samples refreshed into this port so far (a new one each frame its writer wrote).
+  std::uint64_t updates() const { return updates_; }
+  void bind(PortBinder& binder) override { binder.bind(*this); }
+
+  // Host side.
+  T& slot() { return value_; }
+  void mark_updated() {
+    valid_ = true;
+    ++updates_;
+  }
+  void clear() { valid_ = false; }
+
+ private:
+  T value_{};
+  bool valid_ = false;
+  std::uint64_t updates_ = 0;
+};
+
+/// A write port. write() hands the sample to the host at once (the DDS writer, or the
+/// in-process frame buffer).
+template <class T>
+class Output final : public PortBase {
+ public:
+  using Sink = std::function<bool(const T&)>;
+  using PortBase::PortBase;
+  /// Writes one sample; false if the host refused it (counted in refused()).
+  bool write(const T& sample) {
+    ++written_;
+    if (sink_ && sink_(sample)) return true;
+    ++refused_;
+    return false;
+  }
+  std::uint64_t written() const { return written_; }
+  std::uint64_t refused() const { return refused_; }
+  void bind(PortBinder& binder) override { binder.bind(*this); }
+
+  // Host side.
+  void set_sink(Sink sink) { sink_ = std::move(sink); }
+
+ private:
+  Sink sink_;
+  std::uint64_t written_ = 0;
+  std::uint64_t refused_ = 0;
+};
+
+/// Faults a component met while stepping (numerical faults, rejected inputs...), counted by
+/// kind and reported by the host in the federate status and the final summary.
+struct FaultReport {
+  std::string kind;     // e.g. "numerical", "input_rejected"
+  std::uint64_t count = 0;
+  std::string last;     // the latest message of that kind
+};
+
+class Component {
+ public:
+  explicit Component(std::string name);
+  virtual ~Component();
+  Component(const Component&) = delete;
+  Component& operator=(const Component&) = delete;
+
+  const std::string& name() const { return name_; }
+  const std::vector<std::unique_ptr<PortBase>>& ports() const { return ports_; }
+
+  /// Instructor commands, delivered just before the step of the frame they arrived in (never in
+  /// the middle of a step). SHUTDOWN is the host's.
+  virtual void on_command(const msg::SimCommand& command) {}
+  /// One frame: read the inputs, step the model, write the outputs.
+  virtual void step(const FrameContext& frame) = 0;
+  /// Once, after the last step (flush files here).
+  virtual void on_stop() {}
+
+  /// The faults reported so far, by kind.
+  const std::vector<FaultReport>& faults() const { return faults_; }
+  std::uint64_t fault_count() const;
+
+  /// Where the component logs (the host's logger once bound; a default one until then).
+  spdlog::logger& log() const { return *log_; }
+  void set_logger(std::shared_ptr<spdlog::logger> logger) { log_ = std::move(logger); }
+
+ protected:
+  /// Declares a read port on a catalogue topic; `qos` overrides the topic's default profile.
+  template <class T>
+  Input<T>& reads(const Topic<T>& topic, std::string_view qos = {}) {
+    return add<Input<T>>(topic.info, PortDirection::kRead, qos, topic.info.lockstep_input);
+  }
+  /// Declares a read port that never holds the frame back (a monitor of a topic).
+  template <class T>
+  Input<T>& monitors(const Topic<T>& topic, std::string_view qos = {}) {
+    return add<Input<T>>(topic.info, PortDirection::kRead, qos, false);
+  }
+  /// Declares a write port on a catalogue topic.
+  template <class T>
+  Output<T>& writes(const Topic<T>& topic, std::string_view qos = {}) {
+    return add<Output<T>>(topic.info, PortDirection::kWrite, qos, false);
+  }
+  /// Counts a fault of `kind` and logs its message (rate-limited: the first and then every
+  /// 100th of a kind).
+  void report_fault(const std::string& kind, const std::string& message);
+
+ private:
+  template <class P>
+  P& add(const TopicInfo& topic, PortDirection direction, std::string_view qos, bool lockstep) {
+    PortInfo info{&topic, direction, qos.empty() ? topic.default_qos : std::string(qos), lockstep};
+    auto port = std::make_unique<P>(std::move(info));
+    P& ref = *port;
+    ports_.push_back(std::move(port));
+    return ref;
+  }
+
+  std::string name_;
+  std::vector<std::unique_ptr<PortBase>> ports_;
+  std::vector<FaultReport> faults_;
+  std::shared_ptr<spdlog::logger> log_;
+};
+
+/// The ports of a component as one JSON document ({"federate": name, "ports": [...]}) - what
+/// `<federate> --print-ports` prints and `fedsim graph` reads.
+std::string ports_json(const Component& component);
+
+}  // namespace fedsim::runtime

@@ -1,0 +1,77 @@
+#include "common/runtime/topic_catalogue.hpp"
+
+#include <algorithm>
+
+namespace fedsim::runtime {
+
+const std::vector<std::string_view>& qos::all() {
+  static const std::vector<std::string_view> profiles = {kTick,         kFrameDone, kState,
+                                                         kLockstepData, kCommand,   kStatus};
+  return profiles;
+}
+
+namespace {
+template <class T>
+Topic<T> topic(const std::string& name, std::string_view qos, bool lockstep_input,
+               std::string description) {
+  typename TopicType<T>::PubSubType support;
+  return Topic<T>{TopicInfo{name, support.getName(), std::string(qos), lockstep_input,
+                            std::move(description)}};
+}
+}  // namespace
+
+namespace topics {
+// Backbone (the runtime's own): tick and acknowledgement, commands, status.
+const Topic<msg::FrameTick> frame_tick =
+    topic<msg::FrameTick>(msg::TOPIC_FRAME_TICK, qos::kTick, false,
+                          "start of frame from fedsim-timing: frame number, sim time, run state");
+const Topic<msg::FrameDone> frame_done =
+    topic<msg::FrameDone>(msg::TOPIC_FRAME_DONE, qos::kFrameDone, false,
+                          "a federate finished a frame (keyed by federate)");
+const Topic<msg::SimCommand> sim_command = topic<msg::SimCommand>(
+    msg::TOPIC_SIM_COMMAND, qos::kCommand, false,
+    "instructor commands: run/freeze/reset, reposition, weather, failures, shutdown");
+const Topic<msg::FederateStatus> federate_status =
+    topic<msg::FederateStatus>(msg::TOPIC_FEDERATE_STATUS, qos::kStatus, false,
+                               "each federate's state, frame statistics and faults");
+// Simulation data.
+const Topic<msg::PilotControls> pilot_controls =
+    topic<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS, qos::kLockstepData, true,
+                              "inceptor, lever and switch positions");
+const Topic<msg::AircraftState> aircraft_state =
+    topic<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, qos::kState, true,
+                              "position, velocity, attitude, rates, air data of each aircraft");
+const Topic<msg::EngineState> engine_state = topic<msg::EngineState>(
+    msg::TOPIC_ENGINE_STATE, qos::kState, true, "each engine's thrust, speeds, temperatures");
+const Topic<msg::NavigationState> navigation_state = topic<msg::NavigationState>(
+    msg::TOPIC_NAVIGATION_STATE, qos::kState, true, "radio aids, INS, GPS, flight director");
+const Topic<msg::MotionPlatformState> motion_state = topic<msg::MotionPlatformState>(
+    msg::TOPIC_MOTION_STATE, qos::kState, true, "motion platform pose and actuator lengths");
+const Topic<msg::ControlLoadingState> control_loading_state = topic<msg::ControlLoadingState>(
+    msg::TOPIC_CONTROL_LOADING_STATE, qos::kState, true, "control loader positions and forces");
+const Topic<msg::VisualChannelStatus> visual_status = topic<msg::VisualChannelStatus>(
+    msg::TOPIC_VISUAL_STATUS, qos::kStatus, false, "each image generator's render time and age");
+
+const std::vector<const TopicInfo*>& all() {
+  static const std::vector<const TopicInfo*> every = {
+      &frame_tick.info,     &frame_done.info,       &sim_command.info,
+      &federate_status.info, &pilot_controls.info,  &aircraft_state.info,
+      &engine_state.info,   &navigation_state.info, &motion_state.info,
+      &control_loading_state.info, &visual_status.info};
+  return every;
+}
+
+const TopicInfo* find(std::string_view name) {
+  const auto& every = all();
+  const auto it =
+      std::find_if(every.begin(), every.end(), [&](const TopicInfo* t) { return t->name == name; });
+  return it == every.end() ? nullptr : *it;
+}
+
+bool is_backbone(std::string_view name) {
+  return name == frame_tick.info.name || name == frame_done.info.name ||
+         name == sim_command.info.name || name == federate_status.info.name;
+}
+}  // namespace topics
+
+}  // namespace fedsim::runtime

@@ -1,0 +1,72 @@
+// The topic catalogue: every fedsim topic stated once, with its message type, its default QoS
+// profile (qos/fedsim_qos.xml) and whether a federate that reads it in lockstep waits for the
+// previous frame's sample. Federates declare ports on these (common/runtime/component.hpp);
+// nothing else binds a topic name to a type or a profile.
+//
+// The topic names themselves are the IDL constants (fedsim::msg::TOPIC_*), so that a team using
+// fedsim's IDL from another DDS vendor reads them from the same place.
+#pragma once
+
+#include "common/runtime/topic_types.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fedsim::runtime {
+
+/// QoS profile names of qos/fedsim_qos.xml (the reasoning is in qos/README.md).
+namespace qos {
+inline constexpr std::string_view kTick = "tick";                  // reliable frame tick
+inline constexpr std::string_view kFrameDone = "frame_done";       // reliable, keyed by federate
+inline constexpr std::string_view kState = "state";                // best effort, keep last 1
+inline constexpr std::string_view kLockstepData = "lockstep_data"; // reliable, transient local
+inline constexpr std::string_view kCommand = "command";            // reliable, transient local
+inline constexpr std::string_view kStatus = "status";              // reliable, liveliness
+/// Suffix of the best-effort variants of tick and frame_done (--sync-qos best_effort).
+inline constexpr std::string_view kBestEffortSuffix = "_best_effort";
+/// Every data profile above (participant profiles are listed in qos/README.md).
+const std::vector<std::string_view>& all();
+}  // namespace qos
+
+/// What the catalogue says of a topic, whatever its type (for tools and the port graph).
+struct TopicInfo {
+  std::string name;          // DDS topic name, e.g. "fedsim/aircraft_state"
+  std::string type_name;     // DDS type name, e.g. "fedsim::msg::AircraftState"
+  std::string default_qos;   // profile name in qos/fedsim_qos.xml
+  bool lockstep_input = false;  // readers wait for the previous frame's sample in lockstep
+  std::string description;
+};
+
+/// A topic with its message type T.
+template <class T>
+struct Topic {
+  using Message = T;
+  TopicInfo info;
+  const std::string& name() const { return info.name; }
+};
+
+/// The catalogue. Topics of the federation backbone (tick, done, command, status) belong to the
+/// runtime; the others to the federates that write them.
+namespace topics {
+extern const Topic<msg::FrameTick> frame_tick;
+extern const Topic<msg::FrameDone> frame_done;
+extern const Topic<msg::SimCommand> sim_command;
+extern const Topic<msg::FederateStatus> federate_status;
+extern const Topic<msg::PilotControls> pilot_controls;
+extern const Topic<msg::AircraftState> aircraft_state;
+extern const Topic<msg::EngineState> engine_state;
+extern const Topic<msg::NavigationState> navigation_state;
+extern const Topic<msg::MotionPlatformState> motion_state;
+extern const Topic<msg::ControlLoadingState> control_loading_state;
+extern const Topic<msg::VisualChannelStatus> visual_status;
+
+/// Every topic above, in this order.
+const std::vector<const TopicInfo*>& all();
+/// The topic of that name, or nullptr.
+const TopicInfo* find(std::string_view name);
+/// True for the backbone topics every federate uses through the runtime.
+bool is_backbone(std::string_view name);
+}  // namespace topics
+
+}  // namespace fedsim::runtime
