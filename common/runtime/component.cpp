@@ -8,7 +8,7 @@
 
 namespace fedsim::runtime {
 
-Component::Component(std::string name) : name_(std::move(name)), log_(make_logger(name_, "info")) {}
+Component::Component(std::string name) : name_(std::move(name)), log_(make_logger(name_)) {}
 
 Component::~Component() = default;
 

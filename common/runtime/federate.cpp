@@ -13,6 +13,7 @@ namespace fedsim::runtime {
 namespace {
 constexpr auto kStatusPeriod = std::chrono::seconds(1);
 constexpr auto kInputJoinTimeout = std::chrono::seconds(3);
+// The frame thread wakes at least this often to check signals, deadlines and the status period.
 constexpr auto kLoopWakeup = std::chrono::milliseconds(20);
 
 std::string host_name() {
@@ -33,7 +34,86 @@ FrameContext context_of(const msg::FrameTick& tick) {
   ctx.mode = tick.mode();
   return ctx;
 }
+
+/// A step function as a component without ports (tools).
+class FunctionComponent final : public Component {
+ public:
+  FunctionComponent(std::string name, Federate::StepFunction step,
+                    Federate::CommandHandler on_command, std::function<void()> on_stop)
+      : Component(std::move(name)),
+        step_(std::move(step)),
+        command_(std::move(on_command)),
+        stop_(std::move(on_stop)) {}
+  void on_command(const msg::SimCommand& command) override {
+    if (command_) command_(command);
+  }
+  void step(const FrameContext& frame) override { step_(frame); }
+  void on_stop() override {
+    if (stop_) stop_();
+  }
+
+ private:
+  Federate::StepFunction step_;
+  Federate::CommandHandler command_;
+  std::function<void()> stop_;
+};
 }  // namespace
+
+// ---- Ports over DDS ---------------------------------------------------------------------------
+
+/// Binds a component's ports to readers and writers of the federate's participant. Inputs are
+/// refreshed on the frame thread before each step: lockstep inputs (and every stamped input)
+/// with the newest sample of an earlier frame, the others with the newest sample.
+class Federate::PortBindings final : public PortBinder {
+ public:
+  explicit PortBindings(Federate& federate) : federate_(federate) {}
+
+  void refresh_inputs(std::uint64_t frame) {
+    for (auto& refresh : refreshers_) refresh(frame);
+  }
+
+#define FEDSIM_BIND_OVER_DDS(Msg)                                  \
+  void bind(Input<msg::Msg>& port) override { bind_input(port); } \
+  void bind(Output<msg::Msg>& port) override { bind_output(port); }
+  FEDSIM_PORT_MESSAGE_TYPES(FEDSIM_BIND_OVER_DDS)
+#undef FEDSIM_BIND_OVER_DDS
+
+ private:
+  template <class T>
+  void bind_input(Input<T>& port) {
+    const Topic<T> topic{*port.info().topic};
+    const bool lockstep = port.info().lockstep_input && Stamped<T>;
+    Subscription<T>& sub = federate_.subscribe(topic, port.info().qos, lockstep);
+    if constexpr (Stamped<T>) {
+      refreshers_.push_back([&sub, &port, last = std::int64_t{-1}](std::uint64_t frame) mutable {
+        if (!sub.latest_before(frame, port.slot())) return;
+        const auto stamp = static_cast<std::int64_t>(port.slot().stamp().frame());
+        if (stamp != last) {
+          last = stamp;
+          port.mark_updated();
+        }
+      });
+    } else {
+      refreshers_.push_back([&sub, &port, seen = std::uint64_t{0}](std::uint64_t) mutable {
+        const std::uint64_t received = sub.received_count();
+        if (received == seen || !sub.latest(port.slot())) return;
+        seen = received;
+        port.mark_updated();
+      });
+    }
+  }
+
+  template <class T>
+  void bind_output(Output<T>& port) {
+    Publisher<T>& pub = federate_.publish(Topic<T>{*port.info().topic}, port.info().qos);
+    port.set_sink([&pub](const T& sample) { return pub.publish(sample); });
+  }
+
+  Federate& federate_;
+  std::vector<std::function<void(std::uint64_t)>> refreshers_;
+};
+
+// ---- Federate ---------------------------------------------------------------------------------
 
 Federate::Federate(const FederateOptions& options) : options_(options) {
   install_shutdown_handler();
@@ -42,15 +122,15 @@ Federate::Federate(const FederateOptions& options) : options_(options) {
   options_.dds.name = options_.name;
   dds_ = DdsParticipant::create(options_.dds);
   done_sample_.federate(options_.name);
-  frame_done_pub_ = std::make_unique<Publisher<msg::FrameDone>>(dds_, msg::TOPIC_FRAME_DONE,
-                                                                "frame_done" + options_.sync_qos_suffix);
-  status_pub_ = std::make_unique<Publisher<msg::FederateStatus>>(dds_, msg::TOPIC_FEDERATE_STATUS,
-                                                                 "status");
+  const std::string sync = options_.sync_qos_suffix;
+  frame_done_pub_ = std::make_unique<Publisher<msg::FrameDone>>(
+      dds_, topics::frame_done, topics::frame_done.info.default_qos + sync);
+  status_pub_ = std::make_unique<Publisher<msg::FederateStatus>>(dds_, topics::federate_status);
   tick_sub_ = std::make_unique<Subscription<msg::FrameTick>>(
-      dds_, msg::TOPIC_FRAME_TICK, "tick" + options_.sync_qos_suffix,
+      dds_, topics::frame_tick, topics::frame_tick.info.default_qos + sync,
       [this](const msg::FrameTick& tick, const auto&) { handle_tick(tick); });
   command_sub_ = std::make_unique<Subscription<msg::SimCommand>>(
-      dds_, msg::TOPIC_SIM_COMMAND, "command",
+      dds_, topics::sim_command, qos::kCommand,
       [this](const msg::SimCommand& cmd, const auto&) { handle_command(cmd); });
   publish_status(msg::FEDERATE_STARTING, "");
   log_->info("started domain={} profile={} pid={}", options_.dds.domain_id,
@@ -64,12 +144,31 @@ Federate::~Federate() {
   endpoints_.clear();
 }
 
-double Federate::input_timeout_s() const {
-  const double period = pending_tick_.frame_period_s();
-  if (pending_tick_.mode() == msg::TIMING_MODE_REALTIME && period > 0.0) {
+double Federate::input_timeout_s(const msg::FrameTick& tick) const {
+  const double period = tick.frame_period_s();
+  if (tick.mode() == msg::TIMING_MODE_REALTIME && period > 0.0) {
     return std::min(options_.input_timeout_s, 0.5 * period);
   }
   return options_.input_timeout_s;
+}
+
+std::shared_ptr<Federate::LockstepInput> Federate::register_lockstep_input(
+    const std::string& topic, std::function<int()> matched_writers) {
+  auto input = std::make_shared<LockstepInput>();
+  input->topic = topic;
+  input->matched_writers = std::move(matched_writers);
+  std::lock_guard lock(frame_mutex_);
+  inputs_.push_back(input);
+  return input;
+}
+
+std::function<void(std::uint64_t)> Federate::add_lockstep_input(
+    const std::string& topic, std::function<int()> matched_writers) {
+  auto input = register_lockstep_input(topic, std::move(matched_writers));
+  return [this, input](std::uint64_t frame) {
+    input->last_frame.store(static_cast<std::int64_t>(frame));
+    on_lockstep_input();
+  };
 }
 
 void Federate::handle_command(const msg::SimCommand& command) {
@@ -81,13 +180,20 @@ void Federate::handle_command(const msg::SimCommand& command) {
   commands_.push_back(command);
 }
 
+// Listener thread: record the tick and wake the frame thread.
 void Federate::handle_tick(const msg::FrameTick& tick) {
-  std::lock_guard lock(frame_mutex_);
+  std::unique_lock lock(frame_mutex_);
   if (!accepting_ticks_ || stopping_) return;
+  if (stepping_ && tick.frame() == stepping_frame_) return;  // acknowledged when it finishes
   if (stepped_any_ && tick.frame() <= last_frame_) {
     // The timing federate repeats a tick when an acknowledgement went missing: re-acknowledge.
     ++stats_.repeated_ticks;
-    if (tick.frame() == last_frame_) publish_done_locked(last_frame_, last_compute_us_, last_latency_ns_);
+    if (tick.frame() == last_frame_) {
+      const float compute_us = last_compute_us_;
+      const std::uint64_t latency_ns = last_latency_ns_;
+      lock.unlock();
+      publish_done(tick.frame(), compute_us, latency_ns);
+    }
     return;
   }
   if (pending_ && pending_tick_.frame() == tick.frame()) return;  // a repeat of the pending tick
@@ -95,13 +201,18 @@ void Federate::handle_tick(const msg::FrameTick& tick) {
   pending_tick_ = tick;
   pending_ = true;
   pending_since_ns_ = util::monotonic_ns();
-  step_pending_locked(false);
-  if (pending_) frame_cv_.notify_all();  // the loop thread enforces the input timeout
+  const bool ready = inputs_ready_locked(tick.frame());
+  lock.unlock();
+  if (ready) frame_cv_.notify_one();
 }
 
 void Federate::on_lockstep_input() {
-  std::lock_guard lock(frame_mutex_);
-  if (pending_ && !stopping_) step_pending_locked(false);
+  bool wake = false;
+  {
+    std::lock_guard lock(frame_mutex_);
+    wake = pending_ && !stopping_ && inputs_ready_locked(pending_tick_.frame());
+  }
+  if (wake) frame_cv_.notify_one();
 }
 
 bool Federate::inputs_ready_locked(std::uint64_t frame) const {
@@ -111,22 +222,18 @@ bool Federate::inputs_ready_locked(std::uint64_t frame) const {
   });
 }
 
-void Federate::step_pending_locked(bool forced) {
-  if (!pending_) return;
-  if (!forced && !inputs_ready_locked(pending_tick_.frame())) return;
-  if (forced) {
-    ++stats_.late_inputs;
-    for (const auto& in : inputs_) {
-      if (in->matched_writers() > 0 &&
-          in->last_frame.load() < static_cast<std::int64_t>(pending_tick_.frame()) - 1) {
-        log_->warn("frame={} input={} missing after {:.3f}s: stepping with its last sample",
-                   pending_tick_.frame(), in->topic, input_timeout_s());
-      }
+void Federate::log_late_inputs_locked(std::uint64_t frame) const {
+  for (const auto& in : inputs_) {
+    if (in->matched_writers() > 0 && in->last_frame.load() < static_cast<std::int64_t>(frame) - 1) {
+      log_->warn("frame={} input={} missing after {:.3f}s: stepping with its last sample", frame,
+                 in->topic, input_timeout_s(pending_tick_));
     }
   }
-  pending_ = false;
-  const FrameContext ctx = context_of(pending_tick_);
+}
 
+// Frame thread: refresh the inputs, deliver the commands, step, acknowledge.
+void Federate::run_frame(const msg::FrameTick& tick, bool late) {
+  const FrameContext ctx = context_of(tick);
   {
     std::lock_guard lock(command_mutex_);
     commands_now_.swap(commands_);
@@ -134,36 +241,47 @@ void Federate::step_pending_locked(bool forced) {
   }
   const std::uint64_t start_ns = util::monotonic_ns();
   const std::uint64_t latency_ns =
-      start_ns > pending_tick_.publish_time_ns() ? start_ns - pending_tick_.publish_time_ns() : 0;
+      start_ns > tick.publish_time_ns() ? start_ns - tick.publish_time_ns() : 0;
+  const std::uint64_t faults_before = component_->fault_count();
   try {
-    if (command_handler_) {
-      for (const auto& cmd : commands_now_) command_handler_(cmd);
-    }
-    step_(ctx);
+    bindings_->refresh_inputs(ctx.frame);
+    for (const auto& cmd : commands_now_) component_->on_command(cmd);
+    component_->step(ctx);
   } catch (const std::exception& e) {
     log_->error("frame={} step failed: {}", ctx.frame, e.what());
-    stopping_ = true;
     fail(std::string("step failed: ") + e.what());
+    std::lock_guard lock(frame_mutex_);
+    stepping_ = false;
+    stopping_ = true;
     return;
   }
   const std::uint64_t compute_ns = util::monotonic_ns() - start_ns;
-  stats_.compute.add_ns(compute_ns);
-  stats_.tick_latency.add_ns(latency_ns);
-  window_compute_.add_ns(compute_ns);
-  ++stats_.frames;
-  if (ctx.frame_period_s > 0 && compute_ns > ctx.frame_period_s * 1e9) ++stats_.overruns;
-  stepped_any_ = true;
-  last_frame_ = ctx.frame;
-  last_compute_us_ = static_cast<float>(compute_ns / 1000.0);
-  last_latency_ns_ = latency_ns;
-  publish_done_locked(ctx.frame, last_compute_us_, latency_ns);
-  if (options_.max_frames != 0 && stats_.frames >= options_.max_frames) {
-    stop("stepped " + std::to_string(stats_.frames) + " frames");
+  const float compute_us = static_cast<float>(compute_ns / 1000.0);
+  bool frame_limit = false;
+  {
+    std::lock_guard lock(frame_mutex_);
+    stats_.compute.add_ns(compute_ns);
+    stats_.tick_latency.add_ns(latency_ns);
+    window_compute_.add_ns(compute_ns);
+    ++stats_.frames;
+    if (late) ++stats_.late_inputs;
+    if (ctx.frame_period_s > 0 && compute_ns > ctx.frame_period_s * 1e9) ++stats_.overruns;
+    stepped_any_ = true;
+    stepping_ = false;
+    last_frame_ = ctx.frame;
+    last_compute_us_ = compute_us;
+    last_latency_ns_ = latency_ns;
+    frame_limit = options_.max_frames != 0 && stats_.frames >= options_.max_frames;
   }
+  publish_done(ctx.frame, compute_us, latency_ns);
+  if (component_->fault_count() != faults_before) {
+    publish_status(msg::FEDERATE_RUNNING, "fault: " + component_->faults().back().last);
+  }
+  if (frame_limit) stop("stepped " + std::to_string(options_.max_frames) + " frames");
 }
 
-void Federate::publish_done_locked(std::uint64_t frame, float compute_us,
-                                   std::uint64_t latency_ns) {
+void Federate::publish_done(std::uint64_t frame, float compute_us, std::uint64_t latency_ns) {
+  std::lock_guard lock(done_mutex_);
   done_sample_.frame(frame);
   done_sample_.compute_time_us(compute_us);
   done_sample_.tick_latency_ns(latency_ns);
@@ -181,10 +299,12 @@ void Federate::publish_status(msg::FederateState state, const std::string& messa
     std::lock_guard lock(frame_mutex_);
     status.frames_done(stats_.frames);
     status.overruns(stats_.overruns);
+    status.late_inputs(stats_.late_inputs);
     status.compute_mean_us(static_cast<float>(window_compute_.mean_us()));
     status.compute_max_us(static_cast<float>(window_compute_.max_us()));
     window_compute_.reset();
   }
+  status.faults(component_ ? component_->fault_count() : 0);
   status.uptime_s((util::monotonic_ns() - start_ns_) * 1e-9);
   status_pub_->publish(status);
 }
@@ -226,20 +346,28 @@ void Federate::wait_for_inputs_to_match() {
 }
 
 int Federate::run(StepFunction step) {
-  step_ = std::move(step);
+  FunctionComponent component(options_.name, std::move(step), command_handler_, stop_handler_);
+  return run(component);
+}
+
+int Federate::run(Component& component) {
+  component_ = &component;
+  component.set_logger(log_);
+  bindings_ = std::make_unique<PortBindings>(*this);
+  for (const auto& port : component.ports()) port->bind(*bindings_);
   wait_for_inputs_to_match();
   {
     std::lock_guard lock(frame_mutex_);
     accepting_ticks_ = true;
   }
   publish_status(msg::FEDERATE_READY, "");
-  log_->info("ready");
-  loop_until_stop();
+  log_->info("ready ports={}", component.ports().size());
+  frame_loop();
   finish();
   return exit_code_.load();
 }
 
-void Federate::loop_until_stop() {
+void Federate::frame_loop() {
   const std::uint64_t deadline_ns =
       options_.duration_s > 0 ? start_ns_ + static_cast<std::uint64_t>(options_.duration_s * 1e9)
                               : 0;
@@ -254,15 +382,32 @@ void Federate::loop_until_stop() {
       stop("duration of " + std::to_string(options_.duration_s) + " s reached");
       break;
     }
+    msg::FrameTick tick;
+    bool take = false;
+    bool late = false;
     {
       std::unique_lock lock(frame_mutex_);
-      frame_cv_.wait_for(lock, kLoopWakeup);
-      if (pending_ && !stopping_) {
+      auto frame_ready = [&] {
+        return stop_requested_.load() ||
+               (pending_ && !stopping_ && inputs_ready_locked(pending_tick_.frame()));
+      };
+      frame_cv_.wait_for(lock, kLoopWakeup, frame_ready);
+      if (pending_ && !stopping_ && !stop_requested_.load()) {
+        const bool ready = inputs_ready_locked(pending_tick_.frame());
         const double waited_s = (util::monotonic_ns() - pending_since_ns_) * 1e-9;
-        if (waited_s >= input_timeout_s()) step_pending_locked(true);
+        if (ready || waited_s >= input_timeout_s(pending_tick_)) {
+          if (!ready) log_late_inputs_locked(pending_tick_.frame());
+          tick = pending_tick_;
+          pending_ = false;
+          stepping_ = true;
+          stepping_frame_ = tick.frame();
+          take = true;
+          late = !ready;
+        }
       }
     }
-    if (!announced_running && statistics().frames > 0) {
+    if (take) run_frame(tick, late);
+    if (!announced_running && stepped_any_) {
       announced_running = true;
       publish_status(msg::FEDERATE_RUNNING, "");
     }
@@ -278,26 +423,34 @@ void Federate::finish() {
     std::lock_guard lock(frame_mutex_);
     stopping_ = true;
   }
-  tick_sub_->close();  // no step runs after this
+  tick_sub_->close();  // no tick is taken after this
   command_sub_->close();
   std::string reason;
   {
     std::lock_guard lock(command_mutex_);
     reason = stop_reason_;
   }
-  if (stop_handler_) {
-    try {
-      stop_handler_();
-    } catch (const std::exception& e) {
-      log_->error("stop handler failed: {}", e.what());
-      exit_code_.store(1);
-    }
+  try {
+    component_->on_stop();
+  } catch (const std::exception& e) {
+    log_->error("stop handler failed: {}", e.what());
+    exit_code_.store(1);
+  }
+  std::string faults;
+  for (const auto& f : component_->faults()) {
+    faults += (faults.empty() ? "" : ", ") + f.kind + "=" + std::to_string(f.count);
+    log_->error("fault summary kind={} count={} last=\"{}\"", f.kind, f.count, f.last);
+  }
+  if (!faults.empty()) {
+    exit_code_.store(1);
+    reason += (reason.empty() ? "" : "; ") + std::string("faults: ") + faults;
   }
   const auto stats = statistics();
   log_->info("stopping reason=\"{}\" frames={} overruns={} compute_p50_us={:.1f} "
-             "compute_p99_us={:.1f} compute_max_us={:.1f} late_inputs={}",
+             "compute_p99_us={:.1f} compute_max_us={:.1f} late_inputs={} faults={}",
              reason, stats.frames, stats.overruns, stats.compute.percentile_us(50),
-             stats.compute.percentile_us(99), stats.compute.max_us(), stats.late_inputs);
+             stats.compute.percentile_us(99), stats.compute.max_us(), stats.late_inputs,
+             component_->fault_count());
   publish_status(exit_code_.load() == 0 ? msg::FEDERATE_STOPPING : msg::FEDERATE_FAILED, reason);
   // No lost samples: every reliable writer waits until its readers acknowledged.
   for (auto& flush : flushers_) flush();

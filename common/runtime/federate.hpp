@@ -1,16 +1,23 @@
-// The federate runtime: one DDS participant, typed publish/subscribe, and the frame loop that
-// runs the federate's step on every tick and acknowledges it with its compute time.
+// The DDS host of a component: one participant, a reader or writer on each of the component's
+// ports, and the frame loop that steps the component once per tick and acknowledges it.
 //
 // Subscribes: fedsim/frame_tick (profile "tick"), fedsim/sim_command ("command").
 // Publishes:  fedsim/frame_done ("frame_done") once per stepped frame,
 //             fedsim/federate_status ("status") on every state change and once a second.
 //
-// Lockstep inputs: a subscription made with `lockstep_input = true` must deliver the sample of
-// frame N-1 before frame N steps (when a writer is matched), which makes a lockstep run
-// reproducible: every federate sees exactly the previous frame's data, whatever the thread
-// timing. A missing input is waited for at most --input-timeout (half a frame in realtime).
+// Threads: DDS listener threads only record what arrived (the tick, each lockstep input's
+// frame, commands) and wake the frame thread - the thread that called run() - which refreshes
+// the inputs, delivers commands, runs the step and publishes the acknowledgement. No step runs
+// on a middleware thread and no lock is held while a step runs.
+//
+// Lockstep inputs: a read port on a lockstep-input topic must deliver the sample of frame N-1
+// before frame N steps (when a writer is matched), which makes a lockstep run reproducible:
+// every federate sees exactly the previous frame's data, whatever the thread timing. A missing
+// input is waited for at most --input-timeout (half a frame in realtime), then the frame steps
+// with the last sample and the late input is counted and logged.
 #pragma once
 
+#include "common/runtime/component.hpp"
 #include "common/runtime/dds_participant.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
@@ -22,7 +29,6 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
-#include <vector>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -30,27 +36,6 @@
 #include <vector>
 
 namespace fedsim::runtime {
-
-/// What a federate's step needs to know about the frame it computes.
-struct FrameContext {
-  std::uint64_t frame = 0;       // tick number
-  std::uint64_t sim_frame = 0;   // RUN frames since the last reset
-  double sim_time_s = 0.0;       // simulation time at the start of the frame [s]
-  double dt_s = 0.0;             // simulation step of this frame [s] (0 when frozen)
-  double frame_period_s = 0.0;   // nominal frame period [s]
-  msg::RunState run_state = msg::RUN_STATE_FREEZE;
-  std::uint32_t reset_count = 0;
-  msg::TimingMode mode = msg::TIMING_MODE_REALTIME;
-
-  bool running() const { return run_state == msg::RUN_STATE_RUN; }
-  bool resetting() const { return run_state == msg::RUN_STATE_RESET; }
-  msg::FrameStamp stamp() const {
-    msg::FrameStamp s;
-    s.frame(frame);
-    s.sim_time_s(sim_time_s);
-    return s;
-  }
-};
 
 /// Per-federate frame statistics (compute time of the step, overruns).
 struct FrameStatistics {
@@ -78,68 +63,35 @@ class Federate {
   spdlog::logger& log() const { return *log_; }
   const std::shared_ptr<DdsParticipant>& dds() const { return dds_; }
 
+  /// Runs `component` (its ports bound to DDS readers and writers) until SIGINT/SIGTERM, a
+  /// SHUTDOWN command, --duration or --frames. Returns the process exit code: 0 clean stop,
+  /// 1 the step failed or the component reported faults.
+  int run(Component& component);
+  /// Runs a bare step function (tools whose readers are not ports, e.g. the recorder).
+  int run(StepFunction step);
+
+  /// For tools with dynamic-type readers: registers a lockstep input the runtime did not
+  /// create. Call the returned function with the frame of every sample received.
+  std::function<void(std::uint64_t)> add_lockstep_input(const std::string& topic,
+                                                        std::function<int()> matched_writers);
+  /// A writer / reader not bound to a port (tools and tests).
   template <class T>
-  Publisher<T>& publish(const std::string& topic, const std::string& qos_profile) {
-    auto pub = std::make_shared<Publisher<T>>(dds_, topic, qos_profile);
+  Publisher<T>& publish(const Topic<T>& topic, std::string_view qos = {}) {
+    auto pub = std::make_shared<Publisher<T>>(dds_, topic, qos);
     endpoints_.push_back(pub);
     flushers_.push_back([p = pub.get()] { p->wait_for_acknowledgments(std::chrono::seconds(1)); });
     return *pub;
   }
-
   template <class T>
-  Subscription<T>& subscribe(const std::string& topic, const std::string& qos_profile,
-                             bool lockstep_input = false) {
-    if (!lockstep_input) {
-      auto sub = std::make_shared<Subscription<T>>(dds_, topic, qos_profile);
-      endpoints_.push_back(sub);
-      return *sub;
-    }
-    if constexpr (Stamped<T>) {
-      auto input = std::make_shared<LockstepInput>();
-      input->topic = topic;
-      auto sub = std::make_shared<Subscription<T>>(
-          dds_, topic, qos_profile, [this, in = input.get()](const T& sample, const auto&) {
-            in->last_frame.store(static_cast<std::int64_t>(sample.stamp().frame()));
-            on_lockstep_input();
-          });
-      input->matched_writers = [s = sub.get()] { return s->matched_writers(); };
-      {
-        std::lock_guard lock(frame_mutex_);
-        inputs_.push_back(input);
-      }
-      endpoints_.push_back(sub);
-      return *sub;
-    } else {
-      throw DdsError("topic " + topic + " has no FrameStamp and cannot be a lockstep input");
-    }
-  }
+  Subscription<T>& subscribe(const Topic<T>& topic, std::string_view qos = {},
+                             bool lockstep_input = false);
 
-  /// Registers a lockstep input for a subscription the runtime did not create (dynamic types
-  /// in the recorder). Call the returned function with the frame of every sample received.
-  std::function<void(std::uint64_t)> add_lockstep_input(const std::string& topic,
-                                                        std::function<int()> matched_writers) {
-    auto input = std::make_shared<LockstepInput>();
-    input->topic = topic;
-    input->matched_writers = std::move(matched_writers);
-    {
-      std::lock_guard lock(frame_mutex_);
-      inputs_.push_back(input);
-    }
-    return [this, input](std::uint64_t frame) {
-      input->last_frame.store(static_cast<std::int64_t>(frame));
-      on_lockstep_input();
-    };
-  }
-
-  /// Commands (other than SHUTDOWN, which the runtime handles) are delivered inside the frame,
-  /// just before the step, so a model never sees a command in the middle of a step.
+  /// Commands (other than SHUTDOWN, which the runtime handles) are delivered on the frame
+  /// thread just before the step (run(StepFunction) only; a component has on_command).
   void on_command(CommandHandler handler) { command_handler_ = std::move(handler); }
-  /// Called once when the federate stops, after the last step (flush files here).
+  /// Called once when the federate stops, after the last step (run(StepFunction) only).
   void on_stop(std::function<void()> handler) { stop_handler_ = std::move(handler); }
 
-  /// Runs the frame loop until SIGINT/SIGTERM, a SHUTDOWN command, --duration or --frames.
-  /// Returns the process exit code (0 = clean stop, 1 = the step failed).
-  int run(StepFunction step);
   /// Asks the loop to stop after the current frame (thread-safe).
   void stop(const std::string& reason);
   /// Marks the federate failed (exit code 1) and stops it.
@@ -153,18 +105,22 @@ class Federate {
     std::function<int()> matched_writers;
     std::atomic<std::int64_t> last_frame{-1};
   };
+  class PortBindings;
 
+  std::shared_ptr<LockstepInput> register_lockstep_input(const std::string& topic,
+                                                         std::function<int()> matched_writers);
   void handle_tick(const msg::FrameTick& tick);
   void handle_command(const msg::SimCommand& command);
   void on_lockstep_input();
   bool inputs_ready_locked(std::uint64_t frame) const;
-  void step_pending_locked(bool forced);
-  void publish_done_locked(std::uint64_t frame, float compute_us, std::uint64_t latency_ns);
+  void log_late_inputs_locked(std::uint64_t frame) const;
+  void run_frame(const msg::FrameTick& tick, bool late);
+  void publish_done(std::uint64_t frame, float compute_us, std::uint64_t latency_ns);
   void publish_status(msg::FederateState state, const std::string& message);
   void wait_for_inputs_to_match();
-  void loop_until_stop();
+  void frame_loop();
   void finish();
-  double input_timeout_s() const;
+  double input_timeout_s(const msg::FrameTick& tick) const;
 
   FederateOptions options_;
   std::shared_ptr<spdlog::logger> log_;
@@ -177,26 +133,33 @@ class Federate {
   std::unique_ptr<Subscription<msg::FrameTick>> tick_sub_;
   std::unique_ptr<Subscription<msg::SimCommand>> command_sub_;
 
+  Component* component_ = nullptr;
+  std::unique_ptr<PortBindings> bindings_;
   StepFunction step_;
   CommandHandler command_handler_;
   std::function<void()> stop_handler_;
 
-  // Frame state, guarded by frame_mutex_ (steps run on the middleware's listener threads).
+  // Frame state shared with the listener threads, guarded by frame_mutex_. The step itself
+  // runs without it.
   mutable std::mutex frame_mutex_;
   std::condition_variable frame_cv_;
   std::vector<std::shared_ptr<LockstepInput>> inputs_;
   bool accepting_ticks_ = false;
   bool stopping_ = false;
-  bool pending_ = false;
+  bool pending_ = false;                // a tick waits to be stepped
   msg::FrameTick pending_tick_;
   std::uint64_t pending_since_ns_ = 0;
+  bool stepping_ = false;               // the frame thread is inside run_frame
+  std::uint64_t stepping_frame_ = 0;
   bool stepped_any_ = false;
-  std::uint64_t last_frame_ = 0;
+  std::uint64_t last_frame_ = 0;        // last frame acknowledged
   float last_compute_us_ = 0.0f;
   std::uint64_t last_latency_ns_ = 0;
   FrameStatistics stats_;
   util::LatencyStats window_compute_;  // for the 1 s status report
-  msg::FrameDone done_sample_;
+
+  msg::FrameDone done_sample_;  // frame thread only
+  std::mutex done_mutex_;       // done_sample_ is also re-sent from the tick listener
 
   std::mutex command_mutex_;
   std::vector<msg::SimCommand> commands_;       // received, not yet delivered
@@ -207,5 +170,33 @@ class Federate {
   std::string stop_reason_;
   std::uint64_t start_ns_ = 0;
 };
+
+template <class T>
+Subscription<T>& Federate::subscribe(const Topic<T>& topic, std::string_view qos,
+                                     bool lockstep_input) {
+  if (!lockstep_input) {
+    auto sub = std::make_shared<Subscription<T>>(dds_, topic, qos);
+    endpoints_.push_back(sub);
+    return *sub;
+  }
+  if constexpr (Stamped<T>) {
+    auto input = std::make_shared<LockstepInput>();
+    input->topic = topic.name();
+    auto sub = std::make_shared<Subscription<T>>(
+        dds_, topic, qos, [this, in = input.get()](const T& sample, const auto&) {
+          in->last_frame.store(static_cast<std::int64_t>(sample.stamp().frame()));
+          on_lockstep_input();
+        });
+    input->matched_writers = [s = sub.get()] { return s->matched_writers(); };
+    {
+      std::lock_guard lock(frame_mutex_);
+      inputs_.push_back(input);
+    }
+    endpoints_.push_back(sub);
+    return *sub;
+  } else {
+    throw DdsError("topic " + topic.name() + " has no FrameStamp and cannot be a lockstep input");
+  }
+}
 
 }  // namespace fedsim::runtime

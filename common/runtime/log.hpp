@@ -9,9 +9,9 @@
 
 namespace fedsim::runtime {
 
-/// Creates (or returns) the process logger named after the federate; level is one of
-/// trace, debug, info, warn, error, critical, off.
+/// Creates (or returns) the logger named after the federate; level is one of trace, debug,
+/// info, warn, error, critical, off, or empty: keep the logger's level (info for a new one).
 std::shared_ptr<spdlog::logger> make_logger(const std::string& name,
-                                            const std::string& level = "info");
+                                            const std::string& level = "");
 
 }  // namespace fedsim::runtime

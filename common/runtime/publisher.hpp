@@ -1,7 +1,9 @@
-// A typed DataWriter created from a named QoS profile (qos/fedsim_qos.xml).
+// A typed DataWriter on a catalogue topic, with the topic's default QoS profile
+// (qos/fedsim_qos.xml) or another one named.
 #pragma once
 
 #include "common/runtime/dds_participant.hpp"
+#include "common/runtime/topic_catalogue.hpp"
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
@@ -15,9 +17,11 @@ namespace fedsim::runtime {
 template <class T>
 class Publisher : public fdds::DataWriterListener {
  public:
-  Publisher(std::shared_ptr<DdsParticipant> dds, const std::string& topic_name,
-            const std::string& qos_profile)
-      : dds_(std::move(dds)), topic_name_(topic_name) {
+  Publisher(std::shared_ptr<DdsParticipant> dds, const Topic<T>& catalogue_topic,
+            std::string_view qos = {})
+      : dds_(std::move(dds)), topic_name_(catalogue_topic.name()) {
+    const std::string qos_profile = qos.empty() ? catalogue_topic.info.default_qos : std::string(qos);
+    const std::string& topic_name = topic_name_;
     auto* topic = dds_->template topic<T>(topic_name);
     writer_ = dds_->publisher()->create_datawriter_with_profile(topic, qos_profile, this,
                                                                 fdds::StatusMask::all());

@@ -1,87 +1,93 @@
 // fedsim-synthetic: a federate that does a configurable amount of busy work per frame and
 // publishes a navigation-state-sized sample, for benchmarks and integration tests of the
-// runtime. Optionally subscribes to the pilot controls as a lockstep input and records every
-// frame it saw (for the lockstep tests).
+// runtime. Optionally reads the pilot controls as a lockstep input and traces every frame it
+// saw (for the lockstep tests).
 //
-// Subscribes: fedsim/frame_tick, fedsim/sim_command (runtime); fedsim/pilot_controls if --input.
-// Publishes:  fedsim/navigation_state ("state") if --publish, fedsim/frame_done (runtime).
-#include "common/runtime/federate.hpp"
-#include "common/runtime/shutdown.hpp"
+// Reads:  fedsim/pilot_controls (lockstep input) with --input.
+// Writes: fedsim/navigation_state ("state") with --publish.
+#include "common/runtime/federate_main.hpp"
 #include "common/util/monotonic_clock.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <fstream>
-#include <iostream>
 
 using namespace fedsim;
 
 namespace {
+
 void busy_wait_us(double us) {
   const std::uint64_t until = util::monotonic_ns() + static_cast<std::uint64_t>(us * 1000.0);
   while (util::monotonic_ns() < until) {
   }
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-  runtime::install_shutdown_handler();
-  runtime::FederateOptions common;
+struct SyntheticOptions {
   double work_us = 0.0;
   bool publish = false;
   bool input = false;
   std::string trace_file;
-  CLI::App app{"fedsim-synthetic: a load-generating federate for benchmarks and tests"};
-  runtime::add_federate_options(app, common, "synthetic");
-  app.add_option("--work-us", work_us, "busy work per frame [us]");
-  app.add_flag("--publish", publish, "publish a navigation-state sample every frame");
-  app.add_flag("--input", input, "take fedsim/pilot_controls as a lockstep input");
-  app.add_option("--trace", trace_file,
-                 "write one CSV line per frame: frame,sim_frame,sim_time_s,state,reset_count,"
-                 "input_frame,elevator");
-  CLI11_PARSE(app, argc, argv);
+};
 
-  try {
-    runtime::Federate federate(common);
-    runtime::Publisher<msg::NavigationState>* state_pub = nullptr;
-    if (publish) {
-      state_pub = &federate.publish<msg::NavigationState>(msg::TOPIC_NAVIGATION_STATE, "state");
-    }
-    runtime::Subscription<msg::PilotControls>* controls_sub = nullptr;
-    if (input) {
-      controls_sub = &federate.subscribe<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS,
-                                                              "lockstep_data", true);
-    }
-    std::ofstream trace;
-    if (!trace_file.empty()) {
-      trace.open(trace_file);
-      if (!trace) throw std::runtime_error("cannot write " + trace_file);
-      trace << "frame,sim_frame,sim_time_s,state,reset_count,input_frame,elevator\n";
-    }
-    msg::NavigationState nav;
-    msg::PilotControls controls;
-    federate.on_stop([&] { trace.flush(); });
-    return federate.run([&](const runtime::FrameContext& ctx) {
-      if (work_us > 0) busy_wait_us(work_us);
-      if (state_pub) {
-        nav.stamp(ctx.stamp());
-        state_pub->publish(nav);
-      }
-      if (trace.is_open()) {
-        long long input_frame = -1;
-        float elevator = 0.0f;
-        if (controls_sub && controls_sub->latest_before(ctx.frame, controls)) {
-          input_frame = static_cast<long long>(controls.stamp().frame());
-          elevator = controls.elevator();
-        }
-        trace << ctx.frame << ',' << ctx.sim_frame << ',' << ctx.sim_time_s << ','
-              << static_cast<int>(ctx.run_state) << ',' << ctx.reset_count << ',' << input_frame
-              << ',' << elevator << '\n';
-        trace.flush();  // tests watch the file grow
-      }
-    });
-  } catch (const std::exception& e) {
-    std::cerr << "fedsim-synthetic: " << e.what() << "\n";
-    return 2;
+class SyntheticComponent final : public runtime::Component {
+ public:
+  SyntheticComponent(std::string name, SyntheticOptions options)
+      : Component(std::move(name)),
+        // ---- Ports (optional) ----
+        navigation_state_(options.publish ? &writes(runtime::topics::navigation_state) : nullptr),
+        pilot_controls_(options.input ? &reads(runtime::topics::pilot_controls) : nullptr),
+        options_(std::move(options)) {
+    if (options_.trace_file.empty()) return;
+    trace_.open(options_.trace_file);
+    if (!trace_) throw std::runtime_error("cannot write " + options_.trace_file);
+    trace_ << "frame,sim_frame,sim_time_s,state,reset_count,input_frame,elevator\n";
   }
+
+  void step(const runtime::FrameContext& ctx) override {
+    if (options_.work_us > 0) busy_wait_us(options_.work_us);
+    if (navigation_state_) {
+      nav_.stamp(ctx.stamp());
+      navigation_state_->write(nav_);
+    }
+    if (!trace_.is_open()) return;
+    long long input_frame = -1;
+    float elevator = 0.0f;
+    if (const msg::PilotControls* controls = pilot_controls_ ? pilot_controls_->latest() : nullptr) {
+      input_frame = static_cast<long long>(controls->stamp().frame());
+      elevator = controls->elevator();
+    }
+    trace_ << ctx.frame << ',' << ctx.sim_frame << ',' << ctx.sim_time_s << ','
+           << static_cast<int>(ctx.run_state) << ',' << ctx.reset_count << ',' << input_frame
+           << ',' << elevator << '\n';
+    trace_.flush();  // tests watch the file grow
+  }
+  void on_stop() override { trace_.flush(); }
+
+ private:
+  runtime::Output<msg::NavigationState>* navigation_state_;
+  runtime::Input<msg::PilotControls>* pilot_controls_;
+  SyntheticOptions options_;
+  std::ofstream trace_;
+  msg::NavigationState nav_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  SyntheticOptions options;
+  runtime::FederateProgram program;
+  program.program = "fedsim-synthetic";
+  program.default_name = "synthetic";
+  program.description = "a load-generating federate for benchmarks and tests";
+  program.add_options = [&](CLI::App& app) {
+    app.add_option("--work-us", options.work_us, "busy work per frame [us]")
+        ->check(CLI::Range(0.0, 1.0e6));
+    app.add_flag("--publish", options.publish, "publish a navigation-state sample every frame");
+    app.add_flag("--input", options.input, "take fedsim/pilot_controls as a lockstep input");
+    app.add_option("--trace", options.trace_file,
+                   "write one CSV line per frame: frame,sim_frame,sim_time_s,state,reset_count,"
+                   "input_frame,elevator");
+  };
+  program.make_component = [&](const runtime::FederateOptions& common) {
+    return std::make_unique<SyntheticComponent>(common.name, options);
+  };
+  return runtime::federate_main(argc, argv, program);
 }

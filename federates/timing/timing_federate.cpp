@@ -42,21 +42,20 @@ TimingFederate::TimingFederate(TimingOptions options)
   lockstep_ = options_.mode == "lockstep";
   options_.common.dds.name = options_.common.name;
   dds_ = runtime::DdsParticipant::create(options_.common.dds);
-  tick_pub_ = std::make_unique<runtime::Publisher<msg::FrameTick>>(dds_, msg::TOPIC_FRAME_TICK,
-                                                                   "tick" + options_.common.sync_qos_suffix);
+  tick_pub_ = std::make_unique<runtime::Publisher<msg::FrameTick>>(dds_, runtime::topics::frame_tick, runtime::topics::frame_tick.info.default_qos + options_.common.sync_qos_suffix);
   status_pub_ = std::make_unique<runtime::Publisher<msg::FederateStatus>>(
-      dds_, msg::TOPIC_FEDERATE_STATUS, "status");
+      dds_, runtime::topics::federate_status, runtime::qos::kStatus);
   command_pub_ = std::make_unique<runtime::Publisher<msg::SimCommand>>(
-      dds_, msg::TOPIC_SIM_COMMAND, "command");
+      dds_, runtime::topics::sim_command, runtime::qos::kCommand);
   ack_sub_ = std::make_unique<runtime::Subscription<msg::FrameDone>>(
-      dds_, msg::TOPIC_FRAME_DONE, "frame_done" + options_.common.sync_qos_suffix,
+      dds_, runtime::topics::frame_done, runtime::topics::frame_done.info.default_qos + options_.common.sync_qos_suffix,
       [this](const msg::FrameDone& ack, const auto& info) { on_ack(ack, info); });
   ack_sub_->set_liveliness_handler([this](const auto& status) { on_liveliness(status); });
   status_sub_ = std::make_unique<runtime::Subscription<msg::FederateStatus>>(
-      dds_, msg::TOPIC_FEDERATE_STATUS, "status",
+      dds_, runtime::topics::federate_status, runtime::qos::kStatus,
       [this](const msg::FederateStatus& status, const auto&) { on_status(status); });
   command_sub_ = std::make_unique<runtime::Subscription<msg::SimCommand>>(
-      dds_, msg::TOPIC_SIM_COMMAND, "command",
+      dds_, runtime::topics::sim_command, runtime::qos::kCommand,
       [this](const msg::SimCommand& command, const auto&) { on_command(command); });
   tick_.frame_period_s(1.0 / options_.rate_hz);
   tick_.mode(lockstep_ ? msg::TIMING_MODE_LOCKSTEP : msg::TIMING_MODE_REALTIME);

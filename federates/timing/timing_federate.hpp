@@ -17,8 +17,8 @@
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/util/latency_stats.hpp"
-#include "timing/ack_tracker.hpp"
-#include "timing/run_control.hpp"
+#include "timing/model/ack_tracker.hpp"
+#include "timing/model/run_control.hpp"
 
 #include <spdlog/logger.h>
 

@@ -6,7 +6,7 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
-#include "io/input_profile.hpp"
+#include "io/model/input_profile.hpp"
 
 #include <gtest/gtest.h>
 
@@ -96,7 +96,7 @@ TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
                       {"--mode", "lockstep", "--rate", "100", "--scale", "1", "--expect", "a,b",
                        "--frames", "400", "--shutdown-on-exit"});
   auto dds = instructor_participant(domain);
-  runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Publisher<msg::SimCommand> commands(dds, runtime::topics::sim_command, runtime::qos::kCommand);
   ASSERT_TRUE(commands.wait_for_readers(3, std::chrono::seconds(10)));  // timing, a, b
   // Wait for the run to start (a's trace grows), then freeze, run, reset.
   for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 2000; ++i) {
@@ -329,9 +329,9 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
                       {"--mode", "lockstep", "--rate", "50", "--scale", "2", "--expect", "flight",
                        "--frames", "3000", "--shutdown-on-exit"});
   auto dds = instructor_participant(domain);
-  runtime::Publisher<msg::SimCommand> commands(dds, msg::TOPIC_SIM_COMMAND, "command");
-  runtime::Subscription<msg::AircraftState> state_sub(dds, msg::TOPIC_AIRCRAFT_STATE, "state");
-  runtime::Subscription<msg::EngineState> engine_sub(dds, msg::TOPIC_ENGINE_STATE, "state");
+  runtime::Publisher<msg::SimCommand> commands(dds, runtime::topics::sim_command, runtime::qos::kCommand);
+  runtime::Subscription<msg::AircraftState> state_sub(dds, runtime::topics::aircraft_state, runtime::qos::kState);
+  runtime::Subscription<msg::EngineState> engine_sub(dds, runtime::topics::engine_state, runtime::qos::kState);
   msg::AircraftState state;
   msg::EngineState engine;
   auto wait_for = [&](const std::function<bool()>& condition, double timeout_s) {

@@ -40,7 +40,7 @@ struct CommandOptions {
 class LiveFederates {
  public:
   explicit LiveFederates(const std::shared_ptr<runtime::DdsParticipant>& dds)
-      : sub_(dds, msg::TOPIC_FEDERATE_STATUS, "status",
+      : sub_(dds, runtime::topics::federate_status, runtime::qos::kStatus,
              [this](const msg::FederateStatus& s, const auto&) {
                std::lock_guard lock(mutex_);
                const bool gone = s.state() == msg::FEDERATE_STOPPING ||
@@ -87,7 +87,7 @@ int send(const CommandOptions& o, msg::SimCommand command) {
   try {
     auto dds = runtime::DdsParticipant::create(o.dds);
     LiveFederates live(dds);
-    runtime::Publisher<msg::SimCommand> pub(dds, msg::TOPIC_SIM_COMMAND, "command");
+    runtime::Publisher<msg::SimCommand> pub(dds, runtime::topics::sim_command, runtime::qos::kCommand);
     command.issuer("fedsim-command");
     command.sequence_number(static_cast<uint32_t>(time(nullptr)));
     // Every running federate must get the command before this process, and with it the

@@ -112,7 +112,7 @@ class Progress {
     try {
       auto participant = runtime::DdsParticipant::create(dds);
       sub_ = std::make_unique<runtime::Subscription<msg::FederateStatus>>(
-          participant, msg::TOPIC_FEDERATE_STATUS, "status",
+          participant, runtime::topics::federate_status, runtime::qos::kStatus,
           [this](const msg::FederateStatus& s, const auto&) {
             std::lock_guard lock(mutex_);
             latest_[s.federate().to_string()] = s;

@@ -7,10 +7,18 @@
 #include <fastdds/dds/publisher/qos/DataWriterQos.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <thread>
 
 namespace fedsim::runtime {
 namespace {
+
+/// A test topic of type T (not in the catalogue) on which to try a profile.
+template <class T>
+Topic<T> test_topic(const std::string& name) {
+  typename TopicType<T>::PubSubType support;
+  return Topic<T>{TopicInfo{name, support.getName(), "state", false, "qos test"}};
+}
 
 ParticipantOptions options_on(int domain, const std::string& name) {
   ParticipantOptions o;
@@ -22,19 +30,45 @@ ParticipantOptions options_on(int domain, const std::string& name) {
 
 TEST(QosProfiles, EveryProfileCreatesWriterAndReader) {
   auto dds = DdsParticipant::create(options_on(120, "qos-test"));
-  for (const std::string profile :
-       {"tick", "frame_done", "state", "lockstep_data", "command", "status"}) {
+  for (const std::string_view profile : qos::all()) {
     SCOPED_TRACE(profile);
-    EXPECT_NO_THROW(Publisher<msg::FederateStatus>(dds, "qos_test/" + profile, profile));
-    EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, "qos_test/" + profile, profile));
+    const auto topic = test_topic<msg::FederateStatus>("qos_test/" + std::string(profile));
+    EXPECT_NO_THROW(Publisher<msg::FederateStatus>(dds, topic, profile));
+    EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, topic, profile));
+    const std::string best_effort = std::string(profile) + std::string(qos::kBestEffortSuffix);
+    if (profile == qos::kTick || profile == qos::kFrameDone) {
+      EXPECT_NO_THROW(Publisher<msg::FederateStatus>(dds, topic, best_effort));
+      EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, topic, best_effort));
+    }
   }
+  EXPECT_EQ(qos::all().size(), 6u);
+}
+
+TEST(TopicCatalogue, EveryTopicHasItsIdlNameTypeAndAKnownProfile) {
+  ASSERT_EQ(topics::all().size(), 11u);
+  for (const TopicInfo* t : topics::all()) {
+    SCOPED_TRACE(t->name);
+    EXPECT_EQ(t->name.rfind("fedsim/", 0), 0u);
+    EXPECT_EQ(t->type_name.rfind("fedsim::msg::", 0), 0u);
+    EXPECT_NE(std::find(qos::all().begin(), qos::all().end(), t->default_qos), qos::all().end());
+    EXPECT_EQ(topics::find(t->name), t);
+  }
+  EXPECT_EQ(topics::aircraft_state.name(), msg::TOPIC_AIRCRAFT_STATE);
+  EXPECT_EQ(topics::aircraft_state.info.type_name, "fedsim::msg::AircraftState");
+  EXPECT_TRUE(topics::pilot_controls.info.lockstep_input);
+  EXPECT_FALSE(topics::sim_command.info.lockstep_input);
+  EXPECT_EQ(topics::find("fedsim/no_such_topic"), nullptr);
+  EXPECT_TRUE(topics::is_backbone(msg::TOPIC_FRAME_TICK));
+  EXPECT_FALSE(topics::is_backbone(msg::TOPIC_AIRCRAFT_STATE));
 }
 
 TEST(QosProfiles, ProfilesCarryTheDocumentedPolicies) {
   auto dds = DdsParticipant::create(options_on(120, "qos-test"));
-  Publisher<msg::AircraftState> state(dds, "qos_test/state", "state");
-  Publisher<msg::SimCommand> command(dds, "qos_test/command", "command");
-  Publisher<msg::FrameDone> done(dds, "qos_test/done", "frame_done");
+  Publisher<msg::AircraftState> state(dds, test_topic<msg::AircraftState>("qos_test/state"),
+                                      qos::kState);
+  Publisher<msg::SimCommand> command(dds, test_topic<msg::SimCommand>("qos_test/command"),
+                                     qos::kCommand);
+  Publisher<msg::FrameDone> done(dds, test_topic<msg::FrameDone>("qos_test/done"), qos::kFrameDone);
   using namespace eprosima::fastdds::dds;
   EXPECT_EQ(state.writer()->get_qos().reliability().kind, BEST_EFFORT_RELIABILITY_QOS);
   EXPECT_EQ(state.writer()->get_qos().history().depth, 1);
@@ -57,12 +91,14 @@ TEST(QosProfiles, UnknownProfileAndMissingFileGiveClearErrors) {
   o.qos_file = "/nonexistent/qos.xml";
   EXPECT_THROW(DdsParticipant::create(o), DdsError);
   auto dds = DdsParticipant::create(options_on(120, "qos-test"));
-  EXPECT_THROW(Publisher<msg::FrameDone>(dds, "qos_test/x", "no_such_writer_profile"), DdsError);
+  EXPECT_THROW(Publisher<msg::FrameDone>(dds, test_topic<msg::FrameDone>("qos_test/x"),
+                                         "no_such_writer_profile"),
+               DdsError);
 }
 
 TEST(QosProfiles, LateJoinerReceivesTheLastCommandOfEachKind) {
   auto writer_side = DdsParticipant::create(options_on(121, "commander"));
-  Publisher<msg::SimCommand> commands(writer_side, msg::TOPIC_SIM_COMMAND, "command");
+  Publisher<msg::SimCommand> commands(writer_side, runtime::topics::sim_command, runtime::qos::kCommand);
   msg::SimCommand cmd;
   cmd.kind(msg::COMMAND_RUN_STATE);
   for (std::uint32_t seq = 1; seq <= 3; ++seq) {
@@ -80,7 +116,7 @@ TEST(QosProfiles, LateJoinerReceivesTheLastCommandOfEachKind) {
   auto late = DdsParticipant::create(options_on(121, "late-joiner"));
   std::mutex m;
   std::vector<msg::SimCommand> received;
-  Subscription<msg::SimCommand> sub(late, msg::TOPIC_SIM_COMMAND, "command",
+  Subscription<msg::SimCommand> sub(late, runtime::topics::sim_command, runtime::qos::kCommand,
                                     [&](const msg::SimCommand& c, const auto&) {
                                       std::lock_guard lock(m);
                                       received.push_back(c);

@@ -34,6 +34,36 @@ AircraftModel::Runway runway_of(const RunwayEnd& end) {
 }
 }  // namespace
 
+std::optional<std::string> check_pilot_controls(const msg::PilotControls& in) {
+  std::optional<std::string> problem;
+  auto check = [&](const char* name, double value, double low, double high) {
+    if (problem) return;
+    if (!std::isfinite(value)) {
+      problem = std::string(name) + " is not finite";
+    } else if (value < low || value > high) {
+      problem = std::string(name) + " = " + std::to_string(value) + " is outside [" +
+                std::to_string(low) + ", " + std::to_string(high) + "]";
+    }
+  };
+  check("elevator", in.elevator(), -1.0, 1.0);
+  check("aileron", in.aileron(), -1.0, 1.0);
+  check("rudder", in.rudder(), -1.0, 1.0);
+  check("elevator_trim", in.elevator_trim(), -1.0, 1.0);
+  check("aileron_trim", in.aileron_trim(), -1.0, 1.0);
+  check("rudder_trim", in.rudder_trim(), -1.0, 1.0);
+  for (std::size_t e = 0; e < in.throttle().size(); ++e) {
+    check("throttle", in.throttle()[e], 0.0, 1.0);
+    check("mixture", in.mixture()[e], 0.0, 1.0);
+    check("propeller", in.propeller()[e], 0.0, 1.0);
+  }
+  check("flaps", in.flaps(), 0.0, 1.0);
+  check("speedbrake", in.speedbrake(), 0.0, 1.0);
+  check("brake_left", in.brake_left(), 0.0, 1.0);
+  check("brake_right", in.brake_right(), 0.0, 1.0);
+  check("nosewheel_steering", in.nosewheel_steering(), -1.0, 1.0);
+  return problem;
+}
+
 AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,
                                        const AircraftControls& trimmed) {
   AircraftControls c = trimmed;

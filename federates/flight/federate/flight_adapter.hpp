@@ -8,6 +8,7 @@
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "common/airports/runway_table.hpp"
 
+#include <optional>
 #include <string>
 
 namespace fedsim::flight {
@@ -18,6 +19,10 @@ namespace fedsim::flight {
 ///              scripted profile of doublets flies about the trim); the other channels
 ///              (flaps, gear, brakes, steering, mixture, propeller, trims) are absolute.
 enum class ControlsMode { kAbsolute, kRelative };
+
+/// Why a pilot-controls sample cannot be flown (a non-finite value, or one outside its range:
+/// primaries, trims and steering -1..1, levers, flaps and brakes 0..1), or nullopt if it can.
+std::optional<std::string> check_pilot_controls(const msg::PilotControls& in);
 
 /// Pilot controls as the model takes them (clamped by the model).
 AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,

@@ -7,7 +7,7 @@
 
 #include "flight/fly/csv_recorder.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
-#include "io/input_profile.hpp"
+#include "io/model/input_profile.hpp"
 
 namespace fedsim::flight {
 

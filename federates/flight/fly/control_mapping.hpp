@@ -3,7 +3,7 @@
 #pragma once
 
 #include "flight/model/aircraft/aircraft_controls.hpp"
-#include "io/control_inputs.hpp"
+#include "io/model/control_inputs.hpp"
 
 namespace fedsim::flight {
 

@@ -16,7 +16,7 @@
 #include "common/util/config_node.hpp"
 #include "flight/fly/batch_flight.hpp"
 #include "flight/fly/fly_options.hpp"
-#include "io/input_profile.hpp"
+#include "io/model/input_profile.hpp"
 
 using namespace fedsim;
 using namespace fedsim::flight;

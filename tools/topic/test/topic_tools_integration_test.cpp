@@ -64,7 +64,7 @@ class PeriodicStatePublisher {
  public:
   PeriodicStatePublisher(std::shared_ptr<runtime::DdsParticipant> dds, const std::string& profile,
                          std::chrono::milliseconds period)
-      : pub_(std::move(dds), msg::TOPIC_AIRCRAFT_STATE, profile) {
+      : pub_(std::move(dds), runtime::topics::aircraft_state, profile) {
     thread_ = std::thread([this, period] {
       while (running_.load()) {
         pub_.publish(state_of_frame(++frame_));
@@ -121,9 +121,9 @@ msg::SimCommand reposition_command() {
 
 TEST(TopicList, ShowsPublishedTopicsWithTypeCountsAndQos) {
   auto dds = runtime::DdsParticipant::create(loopback(160, "list_test_publisher"));
-  runtime::Publisher<msg::AircraftState> state(dds, msg::TOPIC_AIRCRAFT_STATE, "state");
-  runtime::Publisher<msg::SimCommand> command(dds, msg::TOPIC_SIM_COMMAND, "command");
-  runtime::Subscription<msg::SimCommand> command_sub(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Publisher<msg::AircraftState> state(dds, runtime::topics::aircraft_state, runtime::qos::kState);
+  runtime::Publisher<msg::SimCommand> command(dds, runtime::topics::sim_command, runtime::qos::kCommand);
+  runtime::Subscription<msg::SimCommand> command_sub(dds, runtime::topics::sim_command, runtime::qos::kCommand);
 
   ListOptions options;
   options.dds = loopback(160, "fedsim");
@@ -155,7 +155,7 @@ TEST(TopicList, ShowsPublishedTopicsWithTypeCountsAndQos) {
 
 TEST(TopicList, RunsThroughTheCli) {
   auto dds = runtime::DdsParticipant::create(loopback(161, "cli_test_publisher"));
-  runtime::Publisher<msg::FrameTick> tick(dds, msg::TOPIC_FRAME_TICK, "tick");
+  runtime::Publisher<msg::FrameTick> tick(dds, runtime::topics::frame_tick, runtime::qos::kTick);
   CLI::App app{"fedsim"};
   add_topic_commands(app);
   testing::internal::CaptureStdout();
@@ -221,7 +221,7 @@ TEST(TopicList, WorksForTypesOutsideFedsim) {
 
 TEST(TopicEcho, PrintsTheLatestTransientLocalCommand) {
   auto dds = runtime::DdsParticipant::create(loopback(162, "echo_test_publisher"));
-  runtime::Publisher<msg::SimCommand> command(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Publisher<msg::SimCommand> command(dds, runtime::topics::sim_command, runtime::qos::kCommand);
   ASSERT_TRUE(command.publish(reposition_command()));  // before echo exists: durability shows it
 
   EchoOptions options;
@@ -284,7 +284,7 @@ TEST(TopicEcho, FailsClearlyOnAnUnknownTopicOrField) {
       << err.str();
 
   auto dds = runtime::DdsParticipant::create(loopback(164, "echo_error_publisher"));
-  runtime::Publisher<msg::SimCommand> command(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Publisher<msg::SimCommand> command(dds, runtime::topics::sim_command, runtime::qos::kCommand);
   options.topic = msg::TOPIC_SIM_COMMAND;
   options.field = "reposition.altitude";
   options.wait_s = 3.0;
@@ -315,7 +315,7 @@ TEST(TopicHz, ReportsTheRateOfAKeyedStream) {
 
 TEST(Record, WritesOneCsvPerTopicWithHeaderAndEveryReliableSample) {
   auto dds = runtime::DdsParticipant::create(loopback(166, "record_test_publisher"));
-  runtime::Publisher<msg::SimCommand> command(dds, msg::TOPIC_SIM_COMMAND, "command");
+  runtime::Publisher<msg::SimCommand> command(dds, runtime::topics::sim_command, runtime::qos::kCommand);
   ASSERT_TRUE(command.publish(reposition_command()));
   const auto dir = fresh_dir("record");
   std::uint64_t published = 0;
@@ -380,13 +380,13 @@ TEST(Record, LockstepMemberRecordsEveryFrameBeforeAcknowledging) {
   constexpr int kDomain = 167;
   constexpr std::uint64_t kFrames = 40;
   auto dds = runtime::DdsParticipant::create(loopback(kDomain, "lockstep_test_timing"));
-  runtime::Publisher<msg::AircraftState> state(dds, msg::TOPIC_AIRCRAFT_STATE, "lockstep_data");
-  runtime::Publisher<msg::FrameTick> tick(dds, msg::TOPIC_FRAME_TICK, "tick");
+  runtime::Publisher<msg::AircraftState> state(dds, runtime::topics::aircraft_state, runtime::qos::kLockstepData);
+  runtime::Publisher<msg::FrameTick> tick(dds, runtime::topics::frame_tick, runtime::qos::kTick);
   std::mutex done_mutex;
   std::condition_variable done_cv;
   std::uint64_t acknowledged = 0;
   runtime::Subscription<msg::FrameDone> done(
-      dds, msg::TOPIC_FRAME_DONE, "frame_done", [&](const msg::FrameDone& d, const auto&) {
+      dds, runtime::topics::frame_done, runtime::qos::kFrameDone, [&](const msg::FrameDone& d, const auto&) {
         if (d.federate() != "test_recorder") return;
         std::lock_guard lock(done_mutex);
         acknowledged = std::max<std::uint64_t>(acknowledged, d.frame());

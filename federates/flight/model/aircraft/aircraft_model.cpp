@@ -260,6 +260,7 @@ void AircraftModel::reset(const AircraftInitialConditions& initial) {
   }
   time_s_ = 0.0;
   outputs_.numerical_fault = false;
+  outputs_.dropped_steps = 0;
   mass_->reset();
   for (std::size_t i = 0; i < initial.fuel_kg.size(); ++i) {
     mass_->set_tank_contents_kg(i, initial.fuel_kg[i]);
@@ -300,6 +301,7 @@ void AircraftModel::step(double frame_dt_s) {
       alpha_dot_radps_ = 0.0;
       beta_dot_radps_ = 0.0;
       outputs_.numerical_fault = true;
+      ++outputs_.dropped_steps;
       evaluate_current();
     }
   }

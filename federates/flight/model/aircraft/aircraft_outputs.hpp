@@ -2,6 +2,8 @@
 // and more): position, velocity, attitude, rates, air data, surfaces, engines, gear, mass.
 #pragma once
 
+#include <cstdint>
+
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -136,6 +138,8 @@ struct AircraftOutputs {
   /// Set when a step produced a non-finite state: the model kept the last finite state (the
   /// step is lost) instead of publishing NaN. Cleared by reset.
   bool numerical_fault = false;
+  /// Integration steps dropped that way since the last reset (hosts count and report them).
+  std::uint64_t dropped_steps = 0;
 };
 
 }  // namespace fedsim::flight

@@ -1,4 +1,4 @@
-#include "io/input_profile.hpp"
+#include "io/model/input_profile.hpp"
 
 #include <gtest/gtest.h>
 

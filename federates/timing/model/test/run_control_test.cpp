@@ -1,4 +1,4 @@
-#include "timing/run_control.hpp"
+#include "timing/model/run_control.hpp"
 
 #include <gtest/gtest.h>
 

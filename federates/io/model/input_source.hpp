@@ -2,7 +2,7 @@
 // A/D-converter emulation slot in as further implementations.
 #pragma once
 
-#include "io/control_inputs.hpp"
+#include "io/model/control_inputs.hpp"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "io/control_inputs.hpp"
+#include "io/model/control_inputs.hpp"
 
 #include <algorithm>
 

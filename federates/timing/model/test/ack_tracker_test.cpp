@@ -1,4 +1,4 @@
-#include "timing/ack_tracker.hpp"
+#include "timing/model/ack_tracker.hpp"
 
 #include <gtest/gtest.h>
 

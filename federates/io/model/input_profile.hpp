@@ -13,7 +13,7 @@
 #pragma once
 
 #include "common/csv/csv_reader.hpp"
-#include "io/input_source.hpp"
+#include "io/model/input_source.hpp"
 
 #include <stdexcept>
 #include <string>

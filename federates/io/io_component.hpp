@@ -1,0 +1,34 @@
+// fedsim-io's adapter (the seed's node 1 inputs): every frame, samples the input source (a
+// scripted profile today; joysticks and A/D emulation implement the same InputSource) and
+// publishes the pilot controls, stamped with the frame they were sampled in.
+#pragma once
+
+#include "common/runtime/component.hpp"
+#include "io/model/input_source.hpp"
+
+#include <memory>
+#include <string>
+
+namespace fedsim::io {
+
+/// The pilot controls message of a set of control channels (no allocation).
+void to_message(const ControlInputs& in, msg::PilotControls& out);
+
+class IoComponent final : public runtime::Component {
+ public:
+  /// `controls_qos` overrides the catalogue's profile of fedsim/pilot_controls.
+  IoComponent(std::string name, std::unique_ptr<InputSource> source, int aircraft_id,
+              std::string_view controls_qos = {});
+  void step(const runtime::FrameContext& frame) override;
+
+ private:
+  // ---- Ports -------------------------------------------------------------------------------
+  // writes fedsim/pilot_controls every frame (lockstep_data: reliable, transient local).
+  runtime::Output<msg::PilotControls>& pilot_controls_;
+
+  std::unique_ptr<InputSource> source_;
+  ControlInputs controls_ = default_controls();
+  msg::PilotControls sample_;
+};
+
+}  // namespace fedsim::io
