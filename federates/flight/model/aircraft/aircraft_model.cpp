@@ -399,10 +399,15 @@ TrimResult AircraftModel::reposition_to_point(const GeodeticPosition& position, 
   return Trim(*this).solve(request);
 }
 
-TrimResult AircraftModel::reposition_to_runway(const Runway& runway) {
+TrimResult AircraftModel::reposition_to_runway(const Runway& runway, double throttle) {
+  if (!(throttle >= 0.0 && throttle <= 1.0)) {
+    throw std::invalid_argument("reposition to runway: throttle must be a number within 0..1 (got " +
+                                std::to_string(throttle) + ")");
+  }
   set_runway_elevation_m(runway.threshold.alt_m);
   TrimRequest request;
   request.kind = TrimKind::kGround;
+  request.ground_throttle = throttle;
   request.position = runway.threshold;
   request.heading_rad = runway.heading_rad;
   request.controls = controls_;

@@ -280,6 +280,41 @@ TEST_P(GroundTrim, RestsOnItsWheelsWithTheStaticLoadSplit) {
   EXPECT_TRUE(model->outputs().weight_on_wheels);
 }
 
+TEST(GroundTrimThrottle, HoldsAFullThrottleRunUpOnTheBrakes) {
+  // A take-off start: the C172 parked with the engine settled at full throttle.
+  auto model = make_model("c172.yaml");
+  TrimRequest r;
+  r.kind = TrimKind::kGround;
+  r.position = {0.7, -1.2, 0.0};
+  r.ground_throttle = 1.0;
+  const TrimResult t = Trim(*model).solve(r);
+  ASSERT_TRUE(t.converged) << t.reason;
+  EXPECT_EQ(t.controls.throttle[0], 1.0);
+  EXPECT_EQ(t.controls.brake_left, 1.0);
+  const EngineOutputs& engine = model->outputs().engines[0];
+  EXPECT_GT(engine.rpm, 2000.0);  // settled at the static full-throttle rpm, not at idle
+  EXPECT_GT(engine.thrust_n, 1000.0);
+  // Settled: the shaft neither speeds up nor slows down over the next seconds.
+  const double rpm = engine.rpm;
+  for (int i = 0; i < 100; ++i) model->step(0.02);
+  EXPECT_NEAR(model->outputs().engines[0].rpm, rpm, 1e-3 * rpm);
+  // The brakes hold: the gear's friction stays inside its viscous band (0.25 m/s), where a
+  // braked wheel under a steady push creeps at a steady speed instead of sliding away
+  // (data/aircraft/README.md, landing_gear).
+  const double creep_mps = model->outputs().ground_speed_mps;
+  for (int i = 0; i < 50; ++i) model->step(0.02);
+  EXPECT_LT(model->outputs().ground_speed_mps, 0.25);
+  EXPECT_NEAR(model->outputs().ground_speed_mps, creep_mps, 0.01);
+
+  for (double bad : {-0.01, 1.01, std::nan(""), double{INFINITY}}) {
+    r.ground_throttle = bad;
+    EXPECT_THROW(Trim(*model).solve(r), std::invalid_argument) << bad;
+    EXPECT_THROW(model->reposition_to_runway({{0.7, -1.2, 0.0}, 0.0}, bad),
+                 std::invalid_argument)
+        << bad;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(BothPacks, GroundTrim, ::testing::Values("c172.yaml", "b737.yaml"),
                          [](const auto& info) { return info.param.substr(0, 4); });
 
