@@ -912,13 +912,16 @@ void AircraftModel::fill_engine_outputs() {
       out.manifold_pressure_pa = p.manifold_pressure_pa;
       out.power_w = p.brake_power_w;
       out.fuel_flow_kgps = p.fuel_flow_kgps;
+      out.egt_k = p.exhaust_gas_temperature_k;
     } else {
       const Turbofan::Outputs& t = engine.turbofan->outputs();
       out.thrust_n = t.thrust_n;
       out.n1_pct = t.n1_pct;
       out.n2_pct = t.n2_pct;
       out.fuel_flow_kgps = t.fuel_flow_kgps;
+      out.egt_k = t.exhaust_gas_temperature_k;
     }
+    out.has_egt = true;
     o.total_thrust_n += out.thrust_n;
   }
 }
