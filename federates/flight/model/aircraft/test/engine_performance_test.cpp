@@ -116,7 +116,7 @@ TEST(EnginePerformance, TakeOffGroundRollFollowsTheSourceEngineAndPropeller) {
   // Handbook class figure: Cessna 172P Pilot's Operating Handbook (1981), section 1
   // specifications: ground roll 890 ft at 2400 lb, sea level, standard day - with the
   // short-field technique (flaps 10 deg, lift-off at 51 KIAS) and the real aircraft's
-  // propeller, which turns 2300-2420 rpm static. The source propeller (prop_75in2f) absorbs
+  // propeller, which turns well above 2300 rpm static. The source propeller (prop_75in2f) absorbs
   // more power at low advance ratio (CP 0.066-0.070) and gives less static thrust (CT/CP =
   // 1.1) than that: with the 160 hp engine it holds 2170-2200 rpm static and ~1570 N, and the
   // roll is ~40 % longer than the handbook's (JSBSim itself reaches the handbook figure only
