@@ -37,13 +37,37 @@ void add_start_options(CLI::App& app, StartOptions& o) {
   app.add_option("--gamma-deg", o.gamma_deg, "climb: flight-path angle [deg], + climbing");
   app.add_option("--bank-deg", o.bank_deg, "turn: bank angle [deg], + right");
   app.add_option("--flaps", o.flaps, "flap setting held in the trim, 0..1")->check(CLI::Range(0.0, 1.0));
+  app.add_option("--throttle", o.throttle,
+                 "ground start (--trim ground, --airport/--runway): throttle of every engine, "
+                 "0 (idle) .. 1 (full), engines settled, brakes set");
   app.add_option("--runway-elevation-m", o.runway_elevation_m, "terrain plane above MSL [m]");
   app.add_option("--airport", o.airport, "ground start: airport (ICAO), with --runway");
   app.add_option("--runway", o.runway, "ground start: runway end, e.g. 28R");
 }
 
+namespace {
+// --throttle: only for the ground starts, a number within 0..1.
+double ground_throttle(const StartOptions& o, bool ground_start) {
+  if (!o.throttle) return 0.0;
+  if (!ground_start) {
+    throw std::invalid_argument(
+        "--throttle sets the engines of a ground start (--trim ground or --airport/--runway); "
+        "a flight trim solves its throttle, an IC file states its own controls");
+  }
+  const double t = *o.throttle;
+  if (!(t >= 0.0 && t <= 1.0)) {  // NaN fails both comparisons
+    throw std::invalid_argument("--throttle: must be a number within 0..1 (got " +
+                                std::to_string(t) + ")");
+  }
+  return t;
+}
+}  // namespace
+
 StartState establish_start(const StartOptions& o, AircraftModel& model) {
   StartState start;
+  const bool ground_start = o.ic_file.empty() &&
+                            (!o.airport.empty() || !o.runway.empty() || o.trim_kind == "ground");
+  const double throttle = ground_throttle(o, ground_start);
   if (!o.ic_file.empty()) {
     const auto file = load_initial_condition_file(o.ic_file);
     if (file.runway_elevation_m) model.set_runway_elevation_m(*file.runway_elevation_m);
@@ -59,7 +83,7 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
     AircraftModel::Runway runway;
     runway.threshold = {end.threshold_lat_rad, end.threshold_lon_rad, end.elevation_m};
     runway.heading_rad = end.heading_rad;
-    const TrimResult trim = model.reposition_to_runway(runway);
+    const TrimResult trim = model.reposition_to_runway(runway, throttle);
     start.trim = trim;
     start.initial = trim.initial_conditions;
     start.controls = trim.controls;
@@ -84,6 +108,7 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
   request.bank_rad = o.bank_deg * units::kDegToRad;
   request.controls.flaps = o.flaps;
   request.controls.gear_down = request.kind == TrimKind::kGround;
+  request.ground_throttle = throttle;
   const TrimResult trim = Trim(model).solve(request);
   start.trim = trim;
   start.initial = trim.initial_conditions;

@@ -23,6 +23,7 @@ struct StartOptions {
   double gamma_deg = 0.0;          // --gamma-deg (climb)
   double bank_deg = 0.0;           // --bank-deg (turn)
   double flaps = 0.0;              // --flaps 0..1
+  std::optional<double> throttle;  // --throttle 0..1: engines' throttle on a ground start
   std::optional<double> runway_elevation_m;  // --runway-elevation-m
   std::string airport, runway;     // --airport/--runway: start at that threshold (ground trim)
 };

@@ -170,6 +170,11 @@ TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
       {{"--aircraft", "c172", "--trim", "level"}, "--ktas or --kcas"},
       {{"--aircraft", "c172", "--trim", "spin", "--ktas", "100"}, "--trim"},
       {join(level_trim(), {"--integrator", "verlet"}), "--integrator"},
+      {{"--aircraft", "c172", "--trim", "ground", "--throttle", "nan"}, "--throttle"},
+      {{"--aircraft", "c172", "--trim", "ground", "--throttle", "inf"}, "--throttle"},
+      {{"--aircraft", "c172", "--trim", "ground", "--throttle", "1.5"}, "--throttle"},
+      {{"--aircraft", "c172", "--trim", "ground", "--throttle", "-0.1"}, "--throttle"},
+      {join(level_trim(), {"--throttle", "0.5"}), "--throttle sets the engines of a ground start"},
   };
   for (const Case& c : cases) {
     const FlyRun run = fly(join(c.args, {"--duration", "1", "--rate", "50", "--out", out}));
@@ -307,6 +312,26 @@ TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
   EXPECT_LT(csv.column("h_agl_m").back(), 3.0);
   EXPECT_LT(csv.column("ground_speed_mps").back(), 0.05);
   EXPECT_EQ(csv.column("brake_left_cmd").back(), 1.0);
+}
+
+TEST_F(FedsimFly, GroundTrimWithTheEngineAtFullThrottleOnTheBrakes) {
+  // A take-off start: parked, brakes set, the engine settled at full throttle.
+  const std::string out = path("runup.csv");
+  const FlyRun run = fly({"--aircraft", "c172", "--trim", "ground", "--throttle", "1",
+                          "--duration", "2", "--rate", "50", "--out", out, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
+  EXPECT_EQ(json_of(run.output)["throttle"].get<double>(), 1.0);
+  const CsvTable csv = CsvTable::load(out);
+  EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 1.0);
+  EXPECT_EQ(csv.column("brake_left_cmd").front(), 1.0);
+  // Settled at the start: full-throttle static rpm (far above the 550 rpm idle) from row 0.
+  EXPECT_GT(csv.column("eng1_rpm").front(), 2000.0);
+  EXPECT_NEAR(csv.column("eng1_rpm").back(), csv.column("eng1_rpm").front(), 5.0);
+  EXPECT_GT(csv.column("eng1_thrust_n").front(), 1000.0);
+  // Held by the brakes: inside the gear's viscous friction band (0.25 m/s), where a braked
+  // wheel under a steady push creeps instead of sliding (data/aircraft/README.md).
+  EXPECT_LT(csv.column("ground_speed_mps").back(), 0.25);
 }
 
 TEST_F(FedsimFly, ClimbAndTurnTrims) {

@@ -399,10 +399,15 @@ TrimResult AircraftModel::reposition_to_point(const GeodeticPosition& position, 
   return Trim(*this).solve(request);
 }
 
-TrimResult AircraftModel::reposition_to_runway(const Runway& runway) {
+TrimResult AircraftModel::reposition_to_runway(const Runway& runway, double throttle) {
+  if (!(throttle >= 0.0 && throttle <= 1.0)) {
+    throw std::invalid_argument("reposition to runway: throttle must be a number within 0..1 (got " +
+                                std::to_string(throttle) + ")");
+  }
   set_runway_elevation_m(runway.threshold.alt_m);
   TrimRequest request;
   request.kind = TrimKind::kGround;
+  request.ground_throttle = throttle;
   request.position = runway.threshold;
   request.heading_rad = runway.heading_rad;
   request.controls = controls_;
@@ -907,13 +912,16 @@ void AircraftModel::fill_engine_outputs() {
       out.manifold_pressure_pa = p.manifold_pressure_pa;
       out.power_w = p.brake_power_w;
       out.fuel_flow_kgps = p.fuel_flow_kgps;
+      out.egt_k = p.exhaust_gas_temperature_k;
     } else {
       const Turbofan::Outputs& t = engine.turbofan->outputs();
       out.thrust_n = t.thrust_n;
       out.n1_pct = t.n1_pct;
       out.n2_pct = t.n2_pct;
       out.fuel_flow_kgps = t.fuel_flow_kgps;
+      out.egt_k = t.exhaust_gas_temperature_k;
     }
+    out.has_egt = true;
     o.total_thrust_n += out.thrust_n;
   }
 }

@@ -127,9 +127,11 @@ class AircraftModel {
   /// In flight at a point: wings level, straight and level at the true airspeed.
   TrimResult reposition_to_point(const GeodeticPosition& position, double heading_rad,
                                  double tas_mps);
-  /// On the runway centreline at the threshold, aligned, at rest, brakes set; the runway
-  /// elevation becomes the threshold's.
-  TrimResult reposition_to_runway(const Runway& runway);
+  /// On the runway centreline at the threshold, aligned, at rest, brakes set, the engines
+  /// running at `throttle` (0 idle .. 1 full, e.g. 1 for a take-off from a run-up held on the
+  /// brakes); the runway elevation becomes the threshold's. Throws std::invalid_argument for a
+  /// throttle that is not a number within 0..1.
+  TrimResult reposition_to_runway(const Runway& runway, double throttle = 0.0);
   /// On the extended centreline distance_m before the threshold, on a glide path of
   /// glide_path_rad (3 deg) through 50 ft over the threshold, established in a steady descent
   /// at the true airspeed with the current flaps and gear.

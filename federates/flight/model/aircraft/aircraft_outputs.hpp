@@ -30,7 +30,8 @@ struct EngineOutputs {
   double manifold_pressure_pa = 0.0;  ///< piston
   double power_w = 0.0;               ///< piston: brake (shaft) power
   double fuel_flow_kgps = 0.0;
-  /// No engine model computes an exhaust temperature yet: has_egt is false and egt_k 0.
+  /// Exhaust gas temperature: both engine types model it (has_egt true); ambient when the
+  /// engine is not burning.
   bool has_egt = false;
   double egt_k = 0.0;
 };

@@ -190,7 +190,13 @@ class TrimProblem {
     }
     if (!std::isfinite(r.heading_rad)) bad("heading must be finite");
     if (r.max_iterations < 1) bad("max_iterations must be >= 1");
-    if (r.kind == TrimKind::kGround) return;
+    if (r.kind == TrimKind::kGround) {
+      if (!(r.ground_throttle >= 0.0 && r.ground_throttle <= 1.0)) {
+        bad("ground_throttle must be a number within 0..1 (got " +
+            format("%g", r.ground_throttle) + ")");
+      }
+      return;
+    }
     if (!(r.airspeed_mps > 0.0) || !std::isfinite(r.airspeed_mps)) bad("airspeed must be > 0");
     if (!(std::abs(r.flight_path_rad) < 60.0 * kDeg)) bad("flight path must be within +-60 deg");
     if (!(std::abs(r.bank_rad) < 80.0 * kDeg)) bad("bank must be within +-80 deg");
@@ -248,7 +254,7 @@ class TrimProblem {
 
   void apply_ground(const Eigen::VectorXd& z) {
     AircraftControls controls = request_.controls;
-    controls.set_throttle(0.0);
+    controls.set_throttle(request_.ground_throttle);
     controls.brake_left = 1.0;
     controls.brake_right = 1.0;
     model_.set_controls(controls);

@@ -18,7 +18,7 @@ enum class TrimKind {
   kLevel,   ///< straight and level (flight path 0)
   kClimb,   ///< straight steady climb or descent at a flight-path angle
   kTurn,    ///< steady coordinated level turn at a bank angle
-  kGround,  ///< at rest on the runway: gear settled, throttle idle, brakes set
+  kGround,  ///< at rest on the runway: gear settled, brakes set, engines at ground_throttle
 };
 
 /// "level", "climb", "turn", "ground"; throws std::invalid_argument.
@@ -38,8 +38,11 @@ struct TrimRequest {
   double bank_rad = 0.0;         ///< kTurn: bank angle, + right wing down (turning right)
   /// Configuration held during the trim (flaps, gear, mixture, propeller levers, speedbrake,
   /// trims). The trim writes elevator, aileron, rudder and the throttles of all engines (and
-  /// on the ground sets the throttles to idle and the brakes on).
+  /// on the ground sets the throttles to ground_throttle and the brakes on).
   AircraftControls controls;
+  /// kGround: the throttle of every engine while parked, 0 (idle) .. 1 (full), e.g. a
+  /// full-power run-up held on the brakes before a take-off; the engines are settled at it.
+  double ground_throttle = 0.0;
   int max_iterations = 60;
 };
 

@@ -15,6 +15,10 @@ constexpr double kSeaLevelTemperatureK = 288.15;
 constexpr double kSeaLevelDensityKgpm3 = 1.225;
 constexpr double kRevolutionsPerCycle = 2.0;  // four-stroke
 constexpr double kLowestRpm = 1.0;            // keeps N_idle / N finite at a standstill
+// Specific heats at constant pressure (J/(kg K)) of air and of fuel vapour, as JSBSim's
+// FGPiston uses them in its exhaust energy balance.
+constexpr double kCpAirJpkgk = 1005.0;
+constexpr double kCpFuelJpkgk = 1700.0;
 
 double clamp01(double x) { return std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0); }
 
@@ -31,6 +35,14 @@ Table1D PistonEngine::Params::default_mixture_efficiency() {
                   0.09270, 0.10120, 0.11455, 0.12158, 0.12435, 0.12500},
                  {0.00000, 0.00862, 0.21552, 0.48276, 0.70690, 0.83621, 0.93103, 1.00000, 1.00000,
                   0.98276, 0.93103, 0.72414, 0.45690, 0.23276, 0.00000});
+}
+
+Table1D PistonEngine::Params::default_combustion_efficiency() {
+  // Equivalence ratio -> combustion efficiency, as tabulated in JSBSim's FGPiston (rich
+  // mixtures leave unburnt fuel: 0.70 at phi = 1.3).
+  return Table1D({0.00, 0.90, 1.00, 1.05, 1.10, 1.15, 1.20, 1.30, 1.40, 1.50, 1.60, 2.00},
+                 {0.980, 0.980, 0.970, 0.950, 0.900, 0.850, 0.790, 0.700, 0.630, 0.570, 0.525,
+                  0.345});
 }
 
 void PistonEngine::Params::validate() const {
@@ -59,6 +71,13 @@ void PistonEngine::Params::validate() const {
   pc::positive(full_rich_fuel_air_ratio, "full_rich_fuel_air_ratio");
   pc::in_range(idle_cutoff_mixture, 0.0, 0.5, "idle_cutoff_mixture");
   pc::not_empty(mixture_efficiency, "mixture_efficiency");
+  pc::positive(fuel_heating_value_jpkg, "fuel_heating_value_jpkg");
+  pc::in_range(exhaust_heat_fraction, 0.0, 1.0, "exhaust_heat_fraction");
+  pc::in_range(stoichiometric_fuel_air_ratio, 0.01, 0.2, "stoichiometric_fuel_air_ratio");
+  pc::not_empty(combustion_efficiency, "combustion_efficiency");
+  for (double eta : combustion_efficiency.values()) {
+    pc::in_range(eta, 0.0, 1.0, "combustion_efficiency");
+  }
   const double best = mixture_efficiency(best_power_fuel_air_ratio);
   if (!(best > 0.0)) {
     pc::fail("best_power_fuel_air_ratio", "has zero mixture efficiency", best_power_fuel_air_ratio);
@@ -105,6 +124,20 @@ double PistonEngine::fuel_air_ratio(const Inputs& in) const {
   return params_.full_rich_fuel_air_ratio / (2.0 - ml * ml) / std::sqrt(density_ratio);
 }
 
+double PistonEngine::exhaust_gas_temperature_k(const Outputs& out, double ambient_k) const {
+  // Energy balance of the exhaust (JSBSim FGPiston::doEGT): heat released into the exhaust
+  // over the heat capacity rate of the exhaust stream (air plus fuel).
+  const Params& p = params_;
+  const bool combusting = out.fuel_flow_kgps > 0.0 && out.air_flow_kgps > 0.0 &&
+                          out.mixture_efficiency > 0.0;
+  if (!combusting) return ambient_k;
+  const double phi = out.fuel_air_ratio / p.stoichiometric_fuel_air_ratio;
+  const double heat_w = out.fuel_flow_kgps * p.fuel_heating_value_jpkg *
+                        p.combustion_efficiency(phi) * p.exhaust_heat_fraction;
+  const double capacity_wpk = kCpAirJpkgk * out.air_flow_kgps + kCpFuelJpkgk * out.fuel_flow_kgps;
+  return ambient_k + heat_w / capacity_wpk;
+}
+
 PistonEngine::Outputs PistonEngine::evaluate(const Inputs& in) const {
   Outputs out;
   const double rpm = std::max(in.engine_rpm, 0.0);
@@ -117,12 +150,13 @@ PistonEngine::Outputs PistonEngine::evaluate(const Inputs& in) const {
 
   const bool burning =
       in.running && !in.failed && !(clamp01(in.mixture) < params_.idle_cutoff_mixture);
+  out.air_flow_kgps = rated_air_flow_kgps_ * charge * (rpm / params_.rated_rpm);
   if (burning) {
     out.fuel_air_ratio = fuel_air_ratio(in);
     out.mixture_efficiency = params_.mixture_efficiency(out.fuel_air_ratio);
-    out.fuel_flow_kgps =
-        out.fuel_air_ratio * rated_air_flow_kgps_ * charge * (rpm / params_.rated_rpm);
+    out.fuel_flow_kgps = out.fuel_air_ratio * out.air_flow_kgps;
   }
+  out.exhaust_gas_temperature_k = exhaust_gas_temperature_k(out, temperature_k);
   const double imep_pa = burning ? rated_imep_pa_ * charge * out.mixture_efficiency : 0.0;
   const double pumping_mep_pa = std::max(in.ambient_pressure_pa - out.manifold_pressure_pa, 0.0);
 

@@ -42,6 +42,15 @@ namespace fedsim::flight {
 ///    its rated value, which is set by bsfc at the rated point with best-power mixture.
 ///  - `running` false or `failed` true: no combustion, no fuel; losses remain (a stopped or
 ///    windmilling engine absorbs power).
+///  - Exhaust gas temperature: steady energy balance of the exhaust, as JSBSim's FGPiston
+///    (doEGT): a fraction of the fuel's heat of combustion leaves with the exhaust,
+///      EGT = T_amb + m_f H eta_c(phi) f_exh / (cp_air m_air + cp_fuel m_f),
+///    H the fuel's heating value, eta_c the combustion efficiency at the equivalence ratio
+///    phi = (F/A) / (F/A)_stoich, f_exh the exhaust's share of the heat. As m_f = (F/A) m_air,
+///    EGT depends on the mixture and the ambient temperature, not on the power: it peaks just
+///    rich of stoichiometric (phi 1.05: about 1143 K at sea level, ~1600 F, the "peak EGT"
+///    pilots lean to) and falls as the mixture is enriched (full rich: ~1051 K, ~1430 F). Not burning (stopped, cut off, failed, or a mixture
+///    outside the misfire limits, eta_mix = 0): ambient temperature. No thermal lag.
 class PistonEngine {
  public:
   struct Params {
@@ -70,9 +79,17 @@ class PistonEngine {
     /// Power factor as a function of fuel/air mass ratio (1 at best power, 0 at the lean and
     /// rich misfire limits). Default: the Luff correlation used by JSBSim's piston engine.
     Table1D mixture_efficiency = default_mixture_efficiency();
+    /// Exhaust gas temperature (JSBSim FGPiston's figures): fuel heating value (J/kg), the
+    /// share of the combustion heat that leaves with the exhaust, the stoichiometric fuel/air
+    /// ratio of avgas, and the combustion efficiency as a function of equivalence ratio.
+    double fuel_heating_value_jpkg = 47.3e6;
+    double exhaust_heat_fraction = 0.30;
+    double stoichiometric_fuel_air_ratio = 1.0 / 14.7;
+    Table1D combustion_efficiency = default_combustion_efficiency();
 
     void validate() const;
     static Table1D default_mixture_efficiency();
+    static Table1D default_combustion_efficiency();
   };
 
   struct Inputs {
@@ -95,6 +112,8 @@ class PistonEngine {
     double brake_torque_nm = 0.0;       ///< combustion - loss (negative when windmilled)
     double brake_power_w = 0.0;         ///< brake torque * shaft speed
     double fuel_flow_kgps = 0.0;
+    double air_flow_kgps = 0.0;               ///< air mass flow through the cylinders
+    double exhaust_gas_temperature_k = 0.0;   ///< EGT; ambient when not burning
   };
 
   explicit PistonEngine(Params params);
@@ -110,6 +129,7 @@ class PistonEngine {
   double friction_mep_pa(double rpm) const;
   double fuel_air_ratio(const Inputs& in) const;
   double mep_to_torque_nm(double mep_pa) const;
+  double exhaust_gas_temperature_k(const Outputs& out, double ambient_k) const;
 
   Params params_;
   double rated_map_pa_ = 0.0;

@@ -121,6 +121,7 @@ void PistonPowerplant::fill_outputs(const Inputs& in, const Snapshot& now) {
   out.manifold_pressure_pa = now.engine.manifold_pressure_pa;
   out.brake_power_w = now.engine.brake_power_w;
   out.fuel_flow_kgps = now.engine.fuel_flow_kgps;
+  out.exhaust_gas_temperature_k = now.engine.exhaust_gas_temperature_k;
 }
 
 }  // namespace fedsim::flight

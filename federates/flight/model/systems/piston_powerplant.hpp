@@ -77,6 +77,7 @@ class PistonPowerplant {
     double manifold_pressure_pa = 0.0;
     double brake_power_w = 0.0;
     double fuel_flow_kgps = 0.0;
+    double exhaust_gas_temperature_k = 0.0;  ///< EGT (PistonEngine); ambient when not burning
   };
 
   explicit PistonPowerplant(Params params);

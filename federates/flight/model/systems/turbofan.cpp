@@ -52,6 +52,11 @@ void Turbofan::Params::validate() const {
   pc::positive(tsfc_kgpns, "tsfc_kgpns");
   pc::non_negative(tsfc_per_mach, "tsfc_per_mach");
   pc::non_negative(min_fuel_flow_kgps, "min_fuel_flow_kgps");
+  pc::positive(idle_egt_rise_k, "idle_egt_rise_k");
+  pc::finite(max_egt_rise_k, "max_egt_rise_k");
+  if (!(max_egt_rise_k >= idle_egt_rise_k)) {
+    pc::fail("max_egt_rise_k", "must be at least idle_egt_rise_k", max_egt_rise_k);
+  }
   thrust_line.validate("thrust_line.");
 }
 
@@ -122,6 +127,11 @@ void Turbofan::fill_outputs(const Inputs& in) {
   const double tsfc = p.tsfc_kgpns * (1.0 + p.tsfc_per_mach * mach) * std::sqrt(theta);
   out.fuel_flow_kgps =
       burning ? std::max(tsfc * std::max(out.thrust_n, 0.0), p.min_fuel_flow_kgps) : 0.0;
+  const double ambient_k = std::max(in.temperature_k, 1.0);
+  const double n2 = std::clamp((n2_pct_ - p.idle_n2_pct) / (p.max_n2_pct - p.idle_n2_pct), 0.0, 1.0);
+  out.exhaust_gas_temperature_k =
+      burning ? ambient_k + p.idle_egt_rise_k + (p.max_egt_rise_k - p.idle_egt_rise_k) * n2
+              : ambient_k;
 }
 
 }  // namespace fedsim::flight

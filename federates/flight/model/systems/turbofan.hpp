@@ -32,6 +32,15 @@ namespace fedsim::flight {
 ///  - Fuel flow = TSFC T, TSFC = tsfc_kgpns (1 + tsfc_per_mach M) sqrt(T_amb / T_sl)
 ///    (the (a + b M) sqrt(theta) form of the TSFC models in Mattingly, Heiser & Pratt,
 ///    Aircraft Engine Design, 2nd ed., 2002), floored at min_fuel_flow_kgps while running.
+///  - Exhaust gas temperature rises above ambient linearly with core speed between its rise
+///    at idle and at maximum N2: EGT = T_amb + dT_idle + (dT_max - dT_idle) n2, with
+///    n2 = (N2 - N2_idle) / (N2_max - N2_idle) clamped to 0..1. Defaults are CFM56 figures at
+///    sea level ISA (288.15 K): about 400 C at ground idle (60 % N2; CFM56 crew training
+///    figures: idle 20 % N1, 60 % N2, ~400 C EGT) and 930 C at take-off, the CFM56-3's
+///    take-off EGT limit (Boeing 737-300/400/500 limitations: take-off 930 C for 5 min,
+///    maximum continuous 895 C, start 725 C). The take-off figure is the limit, so the model
+///    is an upper bound there: a healthy engine runs some tens of degrees below its red line.
+///    Not burning (shut down or failed): ambient temperature. No thermal lag.
 /// Not modelled: windmilling drag of a failed engine (belongs in the aerodynamic data),
 /// reverse thrust, bleed.
 class Turbofan {
@@ -55,6 +64,9 @@ class Turbofan {
     double tsfc_kgpns = 0.0;
     double tsfc_per_mach = 0.0;       ///< relative TSFC rise per unit Mach
     double min_fuel_flow_kgps = 0.0;  ///< floor while running (idle at altitude)
+    /// EGT rise above ambient at idle N2 and at maximum N2 (K); CFM56 figures (above).
+    double idle_egt_rise_k = 673.15 - 288.15;
+    double max_egt_rise_k = 1203.15 - 288.15;
     ThrustLine thrust_line;
 
     void validate() const;
@@ -77,6 +89,7 @@ class Turbofan {
     double n2_pct = 0.0;
     double fuel_flow_kgps = 0.0;
     double density_altitude_m = 0.0;
+    double exhaust_gas_temperature_k = 0.0;  ///< EGT; ambient when not burning
   };
 
   explicit Turbofan(Params params);

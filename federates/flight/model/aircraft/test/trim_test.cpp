@@ -56,10 +56,31 @@ TEST_P(TrimConverges, EveryResidualWithinItsTolerance) {
   ASSERT_TRUE(t.converged) << c.name << ": " << t.reason;
   EXPECT_TRUE(t.reason.empty());
   EXPECT_LE(t.iterations, 20);
-  for (int axis = 0; axis < kTrimAxisCount; ++axis) {
-    const auto i = static_cast<std::size_t>(axis);
-    if (!t.constrained[i]) continue;
-    EXPECT_LE(std::abs(t.residuals[i]), t.tolerances[i]) << c.name << " " << trim_axis_name(axis);
+  // The equilibrium checked from the forces and moments on the trimmed aircraft, not from the
+  // trim's own residuals: Newton's and Euler's laws on the flat earth (NED inertial),
+  //   F / m + g_b - omega x v = 0,   I^-1 (M - omega x (I omega + h_rotor)) = 0,
+  // with the weight, the aerodynamic, propulsive and gear forces, the centripetal term of a
+  // turn and the gyroscopic term of the spinning propeller, h_rotor = sense I_prop Omega x_b.
+  {
+    const AircraftOutputs& o = model->outputs();
+    const Eigen::Vector3d g_b = o.ned_from_body.transpose() * Eigen::Vector3d(0.0, 0.0, kG0);
+    const Eigen::Vector3d linear =
+        o.total_force_b_n / o.mass_kg + g_b - o.omega_b_rps.cross(o.velocity_b_mps);
+    Eigen::Vector3d h_rotor = Eigen::Vector3d::Zero();
+    for (std::size_t e = 0; e < model->pack().engines.size(); ++e) {
+      const EngineSpec& spec = model->pack().engines[e];
+      if (spec.type != EngineType::piston_propeller) continue;
+      ASSERT_EQ(spec.orientation_rad.norm(), 0.0);  // thrust axis along body x
+      h_rotor.x() += spec.propeller.spin_sense * spec.propeller.inertia_kgm2 *
+                     o.engines[e].propeller_rpm * 2.0 * kPi / 60.0;
+    }
+    const Eigen::Vector3d angular =
+        o.inertia_kgm2.inverse() *
+        (o.total_moment_b_nm - o.omega_b_rps.cross(o.inertia_kgm2 * o.omega_b_rps + h_rotor));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(std::abs(linear[k]), 1e-4) << c.name << " force balance, axis " << k;
+      EXPECT_LE(std::abs(angular[k]), 1e-5) << c.name << " moment balance, axis " << k;
+    }
   }
   // The tolerances themselves: 1e-4 m/s^2 on forces, 1e-5 rad/s^2 on moments.
   EXPECT_EQ(t.tolerances[kUDot], 1e-4);
@@ -278,6 +299,41 @@ TEST_P(GroundTrim, RestsOnItsWheelsWithTheStaticLoadSplit) {
   for (int i = 0; i < 500; ++i) model->step(0.02);
   EXPECT_LT(std::hypot(model->outputs().north_m, model->outputs().east_m), 0.5);
   EXPECT_TRUE(model->outputs().weight_on_wheels);
+}
+
+TEST(GroundTrimThrottle, HoldsAFullThrottleRunUpOnTheBrakes) {
+  // A take-off start: the C172 parked with the engine settled at full throttle.
+  auto model = make_model("c172.yaml");
+  TrimRequest r;
+  r.kind = TrimKind::kGround;
+  r.position = {0.7, -1.2, 0.0};
+  r.ground_throttle = 1.0;
+  const TrimResult t = Trim(*model).solve(r);
+  ASSERT_TRUE(t.converged) << t.reason;
+  EXPECT_EQ(t.controls.throttle[0], 1.0);
+  EXPECT_EQ(t.controls.brake_left, 1.0);
+  const EngineOutputs& engine = model->outputs().engines[0];
+  EXPECT_GT(engine.rpm, 2000.0);  // settled at the static full-throttle rpm, not at idle
+  EXPECT_GT(engine.thrust_n, 1000.0);
+  // Settled: the shaft neither speeds up nor slows down over the next seconds.
+  const double rpm = engine.rpm;
+  for (int i = 0; i < 100; ++i) model->step(0.02);
+  EXPECT_NEAR(model->outputs().engines[0].rpm, rpm, 1e-3 * rpm);
+  // The brakes hold: the gear's friction stays inside its viscous band (0.25 m/s), where a
+  // braked wheel under a steady push creeps at a steady speed instead of sliding away
+  // (data/aircraft/README.md, landing_gear).
+  const double creep_mps = model->outputs().ground_speed_mps;
+  for (int i = 0; i < 50; ++i) model->step(0.02);
+  EXPECT_LT(model->outputs().ground_speed_mps, 0.25);
+  EXPECT_NEAR(model->outputs().ground_speed_mps, creep_mps, 0.01);
+
+  for (double bad : {-0.01, 1.01, std::nan(""), double{INFINITY}}) {
+    r.ground_throttle = bad;
+    EXPECT_THROW(Trim(*model).solve(r), std::invalid_argument) << bad;
+    EXPECT_THROW(model->reposition_to_runway({{0.7, -1.2, 0.0}, 0.0}, bad),
+                 std::invalid_argument)
+        << bad;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(BothPacks, GroundTrim, ::testing::Values("c172.yaml", "b737.yaml"),

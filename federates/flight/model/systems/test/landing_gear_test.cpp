@@ -480,7 +480,33 @@ TEST(LandingGear, ParkedWithBrakesStaysPut) {
 }
 
 TEST(LandingGear, DampingRatioHelper) {
-  EXPECT_NEAR(LandingGear::damping_ratio(1e5, 2e4, 1000.0), 2e4 / (2.0 * 1e4), 1e-12);
+  // Checked against the free response of a mass on a spring and damper, integrated here
+  // (RK4, 0.1 ms steps): the logarithmic decrement delta = ln(x_n / x_n+1) between successive
+  // peaks gives zeta = delta / sqrt(4 pi^2 + delta^2) (e.g. Thomson, Theory of Vibration with
+  // Applications, section 2.6).
+  const double k = 1e5, m = 1000.0;
+  for (double c : {2e3, 4e3, 8e3}) {
+    auto accel = [&](double x, double v) { return -(k * x + c * v) / m; };
+    double x = 0.01, v = 0.0, previous_v = 0.0;
+    std::vector<double> peaks;
+    const double dt = 1e-4;
+    for (int i = 0; i < 40000 && peaks.size() < 2; ++i) {
+      const double k1x = v, k1v = accel(x, v);
+      const double k2x = v + 0.5 * dt * k1v, k2v = accel(x + 0.5 * dt * k1x, v + 0.5 * dt * k1v);
+      const double k3x = v + 0.5 * dt * k2v, k3v = accel(x + 0.5 * dt * k2x, v + 0.5 * dt * k2v);
+      const double k4x = v + dt * k3v, k4v = accel(x + dt * k3x, v + dt * k3v);
+      x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+      v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+      if (previous_v > 0.0 && v <= 0.0) peaks.push_back(x);  // a positive maximum
+      previous_v = v;
+    }
+    ASSERT_EQ(peaks.size(), 2u) << c;
+    const double delta = std::log(peaks[0] / peaks[1]);
+    const double zeta = delta / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + delta * delta);
+    EXPECT_NEAR(LandingGear::damping_ratio(k, c, m), zeta, 1e-3) << c;
+  }
+  // Critically damped at c = 2 sqrt(k m) = 20 000 N s/m: zeta = 1.
+  EXPECT_NEAR(LandingGear::damping_ratio(k, 2e4, m), 1.0, 1e-12);
 }
 
 TEST(LandingGear, ValidateNamesTheBadField) {

@@ -180,6 +180,50 @@ TEST(PistonEngine, FuelFlowScalesWithMixtureAndAirFlow) {
   EXPECT_NEAR(half.fuel_flow_kgps, 0.5 * map_ratio * rich.fuel_flow_kgps, 1e-12);
 }
 
+TEST(PistonEngine, ExhaustGasTemperatureByHandAtFullRichSeaLevel) {
+  // Hand calculation of the exhaust energy balance (JSBSim FGPiston figures):
+  //   full rich in sea-level air: F/A = 0.088, equivalence ratio phi = 0.088 x 14.7 = 1.2936;
+  //   combustion efficiency between 0.79 (phi 1.2) and 0.70 (phi 1.3): 0.70576;
+  //   heat into the exhaust per kg of air: 0.088 x 47.3e6 x 0.70576 x 0.30 = 881 299 J;
+  //   heat capacity per kg of air: 1005 + 1700 x 0.088 = 1154.6 J/K;
+  //   rise 763.29 K, EGT = 288.15 + 763.29 = 1051.44 K (778 C, 1433 F).
+  const PistonEngine engine(reference::io320());
+  PistonEngine::Inputs in = full_throttle(2400.0, isa(0.0));
+  const PistonEngine::Outputs full = engine.evaluate(in);
+  EXPECT_NEAR(full.exhaust_gas_temperature_k, 1051.44, 0.01);
+  // The balance holds per kg of air, so EGT does not depend on the power at this mixture.
+  in.throttle = 0.0;
+  in.engine_rpm = 800.0;
+  EXPECT_NEAR(engine.evaluate(in).exhaust_gas_temperature_k, 1051.44, 0.01);
+
+  // Leaning, the rise per kg of air F/A x eta_c(phi) is largest at phi = 1.05 (F/A 0.071429,
+  // efficiency 0.95; richer, the efficiency falls faster than F/A grows, leaner, F/A falls
+  // faster): 0.071429 x 47.3e6 x 0.95 x 0.30 / (1005 + 1700 x 0.071429) = 854.82 K rise,
+  // 1142.97 K (1598 F: the "peak EGT" a pilot leans to, just rich of stoichiometric).
+  in = full_throttle(2400.0, isa(0.0));
+  double peak_k = 0.0, peak_fa = 0.0;
+  for (int i = 0; i <= 2000; ++i) {
+    in.mixture = i / 2000.0;
+    const PistonEngine::Outputs out = engine.evaluate(in);
+    if (out.exhaust_gas_temperature_k > peak_k) {
+      peak_k = out.exhaust_gas_temperature_k;
+      peak_fa = out.fuel_air_ratio;
+    }
+  }
+  EXPECT_NEAR(peak_k, 1142.97, 0.5);
+  EXPECT_NEAR(peak_fa, 1.05 / 14.7, 0.0005);
+
+  // Not burning: ambient temperature, whatever the shaft does.
+  in = full_throttle(2400.0, isa(2000.0));
+  in.running = false;
+  EXPECT_EQ(engine.evaluate(in).exhaust_gas_temperature_k, isa(2000.0).temperature_k);
+  in.running = true;
+  in.mixture = 0.0;  // idle cut-off
+  EXPECT_EQ(engine.evaluate(in).exhaust_gas_temperature_k, isa(2000.0).temperature_k);
+  in = full_throttle(0.0, isa(0.0));  // stopped shaft: no air through the engine
+  EXPECT_EQ(engine.evaluate(in).exhaust_gas_temperature_k, 288.15);
+}
+
 TEST(PistonEngine, StandstillIsFinite) {
   const PistonEngine engine(reference::io320());
   PistonEngine::Inputs in = full_throttle(0.0, isa(0.0));

@@ -144,6 +144,30 @@ TEST(Turbofan, FailureSpoolsDownAndRemovesThrustAndFuel) {
   EXPECT_EQ(engine.outputs().thrust_n, 0.0);
 }
 
+TEST(Turbofan, ExhaustGasTemperatureFromIdleToTakeOffAndAmbientWhenStopped) {
+  // CFM56 figures at sea level ISA: about 400 C at ground idle, 930 C (the CFM56-3's take-off
+  // limit) at maximum N2; linear in N2 between them.
+  Turbofan engine(reference::cfm56());
+  run(engine, flight(0.0, 0.0, 0.0), 30.0);
+  EXPECT_NEAR(engine.outputs().exhaust_gas_temperature_k - 273.15, 400.0, 0.5);
+  run(engine, flight(1.0, 0.0, 0.0), 30.0);
+  EXPECT_NEAR(engine.outputs().exhaust_gas_temperature_k - 273.15, 930.0, 0.5);
+  // Half way in N2 (80 %), half way in EGT rise above ambient: (400 + 930) / 2 = 665 C.
+  run(engine, flight(0.5, 0.0, 0.0), 30.0);
+  EXPECT_NEAR(engine.outputs().n2_pct, 80.0, 0.01);
+  EXPECT_NEAR(engine.outputs().exhaust_gas_temperature_k - 273.15, 665.0, 0.5);
+  // At FL300 (228.7 K) the same N2 runs 59.5 K cooler: EGT rides on the ambient temperature.
+  const Air fl300 = isa(30000.0 * kFt);
+  run(engine, flight(0.5, 0.78, 30000.0 * kFt), 30.0);
+  EXPECT_NEAR(engine.outputs().exhaust_gas_temperature_k - 273.15,
+              665.0 - (288.15 - fl300.temperature_k), 0.5);
+  // Shut down: ambient temperature at once (no thermal lag is modelled).
+  Turbofan::Inputs off = flight(0.0, 0.0, 0.0);
+  off.running = false;
+  engine.step(0.02, off);
+  EXPECT_EQ(engine.outputs().exhaust_gas_temperature_k, 288.15);
+}
+
 TEST(Turbofan, OffCentreEngineYawsTowardTheOtherSide) {
   Turbofan engine(reference::cfm56());  // left engine, y = -4.9 m
   run(engine, flight(1.0, 0.0, 0.0), 30.0);

@@ -1,0 +1,240 @@
+// The C172's engine and propeller against their source data (JSBSim engine/eng_io320.xml,
+// Lycoming IO-320: 160 hp at 2700 rpm, 28.5 inHg; engine/prop_75in2f.xml, 75-inch two-blade
+// fixed pitch): the static full-throttle rpm and power, the take-off ground roll, and the
+// power at the cruise trim. Every expectation is worked out here from the source figures,
+// not by the code under test.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "flight/model/aircraft/pack_to_systems.hpp"
+#include "flight/model/aircraft/test/flight_test_support.hpp"
+
+namespace fedsim::flight {
+namespace {
+
+using namespace testing;
+
+constexpr double kHp = 745.69987158227022;  // W
+constexpr double kInHg = 3386.389;          // Pa
+constexpr double kLb = 0.45359237;          // kg
+
+// --- Source figures, as published in the JSBSim files ---------------------------------------
+constexpr double kRatedPowerW = 160.0 * kHp;  // eng_io320.xml maxhp, at maxrpm, full throttle
+constexpr double kRatedRpm = 2700.0;          // eng_io320.xml maxrpm
+constexpr double kDiameterM = 75.0 * 0.0254;  // prop_75in2f.xml diameter
+
+// prop_75in2f.xml C_THRUST and C_POWER against advance ratio J (the J = 5 end rows omitted:
+// the take-off roll stays below J = 0.5).
+const std::vector<double> kJ = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8};
+const std::vector<double> kCt = {0.073, 0.073, 0.072, 0.071, 0.069, 0.066, 0.062, 0.055, 0.045};
+const std::vector<double> kCp = {0.0660, 0.0700, 0.0700, 0.0660, 0.0600,
+                                 0.0530, 0.0501, 0.0469, 0.0426};
+
+double linear(const std::vector<double>& y, double j) {
+  const double x = std::clamp(j, kJ.front(), kJ.back()) / 0.1;  // breakpoints every 0.1
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), kJ.size() - 2);
+  return y[i] + (y[i + 1] - y[i]) * (x - static_cast<double>(i));
+}
+
+/// Full-throttle engine power at `rpm` from the published rating: the rated torque, held
+/// constant over the speed range (the simplest curve through the rating; an IO-320's
+/// full-throttle torque varies by a few percent between 2000 and 2700 rpm).
+double rated_engine_power_w(double rpm) { return kRatedPowerW * rpm / kRatedRpm; }
+
+/// Propeller power P = CP rho n^3 D^5 and thrust T = CT rho n^2 D^4 (n in rev/s). The tip
+/// speed stays below Mach 0.85 here, where the tip-Mach factors are 1.
+double propeller_power_w(double rpm, double airspeed_mps, double rho) {
+  const double n = rpm / 60.0;
+  return linear(kCp, airspeed_mps / (n * kDiameterM)) * rho * n * n * n * std::pow(kDiameterM, 5);
+}
+double propeller_thrust_n(double rpm, double airspeed_mps, double rho) {
+  const double n = rpm / 60.0;
+  return linear(kCt, airspeed_mps / (n * kDiameterM)) * rho * n * n * std::pow(kDiameterM, 4);
+}
+
+/// The rpm at which the rated engine and the propeller absorb the same power (bisection).
+double balance_rpm(double airspeed_mps, double rho) {
+  double lo = 1000.0, hi = 3500.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (rated_engine_power_w(mid) > propeller_power_w(mid, airspeed_mps, rho) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+constexpr double kSeaLevelDensity = 1.225;  // ISA
+
+const AircraftModel::Runway kRunway{{34.0 * kDeg, -118.0 * kDeg, 0.0}, 69.0 * kDeg};
+
+TEST(EnginePerformance, StaticFullThrottleRpmAndPowerFollowTheSourceData) {
+  // Independent expectation: rated engine = propeller at J = 0, sea level ISA:
+  // 160 hp x N / 2700 = 0.066 x 1.225 x (N/60)^3 x D^5 (D^5 = 25.088 m^5) gives
+  // N^2 = 44.190 / 9.3910e-6, N = 2169 rpm, 128.5 hp.
+  const double expected_rpm = balance_rpm(0.0, kSeaLevelDensity);
+  const double expected_w = rated_engine_power_w(expected_rpm);
+  ASSERT_NEAR(expected_rpm, 2169.2, 0.5);  // the bisection itself, against the hand figure
+
+  // The pack's powerplant, as flown, run to steady state at full throttle, full rich, at rest.
+  const AircraftPack pack = load_pack("c172.yaml");
+  PistonPowerplant plant(piston_powerplant_params(pack.engines.front()));
+  plant.reset(1000.0);
+  PistonPowerplant::Inputs in;
+  in.throttle = 1.0;
+  in.mixture = 1.0;
+  for (int i = 0; i < 3000; ++i) plant.step(0.01, in);  // 30 s, many shaft time constants
+  const PistonPowerplant::Outputs& out = plant.outputs();
+  std::printf("static, SL ISA, full throttle: %.0f rpm, %.1f hp, %.0f N, MAP %.2f inHg "
+              "(source data: %.0f rpm, %.1f hp)\n",
+              out.engine_rpm, out.brake_power_w / kHp, out.thrust_n,
+              out.manifold_pressure_pa / kInHg, expected_rpm, expected_w / kHp);
+  // Power scales with rpm cubed along the propeller's curve, so 2.5 % in rpm is ~8 % in power.
+  EXPECT_NEAR(out.engine_rpm, expected_rpm, 0.025 * expected_rpm);
+  EXPECT_NEAR(out.brake_power_w, expected_w, 0.08 * expected_w);
+  // At the balance the engine's power is what the source propeller absorbs at that rpm, and
+  // the thrust is the source CT's.
+  EXPECT_NEAR(out.brake_power_w, propeller_power_w(out.engine_rpm, 0.0, kSeaLevelDensity),
+              0.002 * out.brake_power_w);
+  EXPECT_NEAR(out.thrust_n, propeller_thrust_n(out.engine_rpm, 0.0, kSeaLevelDensity),
+              0.002 * out.thrust_n);
+  // Full-throttle manifold pressure: 28.5 inHg (maxmp) at 2700 rpm in sea-level air, the
+  // intake loss growing with the engine's air flow, so at this rpm the loss of 29.92 - 28.5
+  // inHg scaled by N / 2700 (to 0.02 inHg, the difference between a linear loss and JSBSim's
+  // intake impedance over this range).
+  EXPECT_NEAR(out.manifold_pressure_pa / kInHg,
+              101325.0 / kInHg - (101325.0 / kInHg - 28.5) * out.engine_rpm / kRatedRpm, 0.02);
+}
+
+TEST(EnginePerformance, TakeOffGroundRollFollowsTheSourceEngineAndPropeller) {
+  // Sea level ISA, 2400 lb (the pack's loading), flaps up, full throttle set on the brakes,
+  // mixture full rich; brakes released, rotate at 55 KCAS (C172P POH normal take-off), the
+  // ground roll is the distance to the wheels leaving the ground.
+  //
+  // Handbook class figure: Cessna 172P Pilot's Operating Handbook (1981), section 1
+  // specifications: ground roll 890 ft at 2400 lb, sea level, standard day - with the
+  // short-field technique (flaps 10 deg, lift-off at 51 KIAS) and the real aircraft's
+  // propeller, which turns well above 2300 rpm static. The source propeller (prop_75in2f) absorbs
+  // more power at low advance ratio (CP 0.066-0.070) and gives less static thrust (CT/CP =
+  // 1.1) than that: with the 160 hp engine it holds 2170-2200 rpm static and ~1570 N, and the
+  // roll is ~40 % longer than the handbook's (JSBSim itself reaches the handbook figure only
+  // because its piston model makes ~205 hp from eng_io320.xml, see DESIGN.md). This test
+  // therefore checks the roll against the source engine and propeller data: the expected roll
+  // is integrated here from the thrust the source data gives at each speed (rated engine and
+  // propeller tables balanced by bisection) and the resistance (aerodynamic drag, rolling
+  // friction) the model meets on the way.
+  auto model = make_model("c172.yaml");
+  ASSERT_NEAR(model->outputs().mass_kg, 2400.0 * kLb, 1.0);
+  const TrimResult parked = model->reposition_to_runway(kRunway, 1.0);
+  ASSERT_TRUE(parked.converged) << parked.reason;
+  ASSERT_GT(model->outputs().engines[0].rpm, 2000.0);  // full power on the brakes
+  AircraftControls c = parked.controls;
+  c.brake_left = c.brake_right = 0.0;
+  const double mass_kg = model->outputs().mass_kg;
+
+  constexpr double kRateHz = 100.0;
+  const Eigen::Vector3d start(model->outputs().north_m, model->outputs().east_m, 0.0);
+  double predicted_m = 0.0, previous_v = model->outputs().ground_speed_mps;
+  double liftoff_m = 0.0, liftoff_kcas = 0.0;
+  for (int i = 0; i < 60 * kRateHz; ++i) {
+    const AircraftOutputs& o = model->outputs();
+    if (o.cas_mps >= 55.0 * kKt) c.elevator = -0.35;  // rotate
+    model->set_controls(c);
+    model->step(1.0 / kRateHz);
+    const AircraftOutputs& now = model->outputs();
+    const double v = now.ground_speed_mps;
+    if (!now.weight_on_wheels) {
+      liftoff_m = std::hypot(now.north_m - start.x(), now.east_m - start.y());
+      liftoff_kcas = now.cas_mps / kKt;
+      break;
+    }
+    // Along the ground track: the resistance the model meets (aerodynamic and gear forces),
+    // and the thrust the source data gives at this airspeed (thrust axis pitched theta).
+    const Eigen::Vector3d track(now.velocity_ned_mps.x(), now.velocity_ned_mps.y(), 0.0);
+    if (track.norm() < 1e-3) continue;
+    const Eigen::Vector3d along = track.normalized();
+    const double resistance_n =
+        -along.dot(now.ned_from_body * (now.aero_force_b_n + now.gear_force_b_n));
+    const double airspeed = now.tas_mps;
+    const double thrust_n = propeller_thrust_n(balance_rpm(airspeed, now.density_kgpm3), airspeed,
+                                               now.density_kgpm3) *
+                            std::cos(now.euler.theta_rad);
+    const double accel = (thrust_n - resistance_n) / mass_kg;
+    ASSERT_GT(accel, 0.0);
+    predicted_m += 0.5 * (v + previous_v) * (v - previous_v) / accel;  // ds = v dv / a
+    previous_v = v;
+  }
+  ASSERT_GT(liftoff_m, 0.0) << "never left the ground";
+  std::printf("C172 take-off roll: lift-off at %.1f KCAS after %.0f m (%.0f ft); source "
+              "engine and propeller: %.0f m (%.0f ft); handbook class (flaps 10): 890 ft\n",
+              liftoff_kcas, liftoff_m, liftoff_m / kFt, predicted_m, predicted_m / kFt);
+  EXPECT_NEAR(liftoff_m, predicted_m, 0.06 * predicted_m);
+  EXPECT_GT(liftoff_kcas, 50.0);
+  EXPECT_LT(liftoff_kcas, 65.0);
+}
+
+TEST(EnginePerformance, CruiseTrimPowerIsWhatThePropellerAbsorbsAndTheEngineMakes) {
+  // 4000 ft, 100 KTAS, 2400 lb, level: the trimmed engine's power must equal what the source
+  // propeller absorbs at the trimmed rpm and advance ratio, and must be in line with what the
+  // IO-320 data predicts at the trimmed manifold pressure and rpm: the charge per cycle scales
+  // with the manifold pressure and the cycles with rpm (indicated power ~ MAP x rpm, seed
+  // 3.8.1 and JSBSim FGPiston's speed-density air flow), so P ~ 160 hp (MAP / 28.5 inHg)
+  // (rpm / 2700) less the friction share that does not scale with MAP, i.e. somewhat below it.
+  auto model = make_model("c172.yaml");
+  const TrimResult t = Trim(*model).solve(cruise("c172.yaml"));
+  ASSERT_TRUE(t.converged) << t.reason;
+  const AircraftOutputs& o = model->outputs();
+  const EngineOutputs& e = o.engines[0];
+  const double rho = o.density_kgpm3;
+  std::printf("cruise 4000 ft 100 KTAS: throttle %.3f, %.0f rpm, MAP %.2f inHg, %.1f hp (%.0f %% "
+              "of 160), thrust %.0f N, EGT %.0f K\n",
+              t.controls.throttle[0], e.rpm, e.manifold_pressure_pa / kInHg, e.power_w / kHp,
+              100.0 * e.power_w / kRatedPowerW, e.thrust_n, e.egt_k);
+  EXPECT_NEAR(e.power_w, propeller_power_w(e.rpm, o.tas_mps, rho), 0.002 * e.power_w);
+  EXPECT_NEAR(e.thrust_n, propeller_thrust_n(e.rpm, o.tas_mps, rho), 0.002 * e.thrust_n);
+  const double map_rpm_scaled_w =
+      kRatedPowerW * (e.manifold_pressure_pa / (28.5 * kInHg)) * (e.rpm / kRatedRpm);
+  EXPECT_LT(e.power_w, map_rpm_scaled_w);
+  EXPECT_GT(e.power_w, 0.85 * map_rpm_scaled_w);
+  // A cruise setting: about 60 % power (flight_test_support.hpp, cruise()).
+  EXPECT_GT(e.power_w, 0.50 * kRatedPowerW);
+  EXPECT_LT(e.power_w, 0.70 * kRatedPowerW);
+  EXPECT_GT(t.controls.throttle[0], 0.0);
+  EXPECT_LT(t.controls.throttle[0], 1.0);
+}
+
+}  // namespace
+}  // namespace fedsim::flight
+
+namespace fedsim::flight {
+namespace {
+
+TEST(EnginePerformance, RunningEnginesReportTheirExhaustTemperatureStoppedOnesAmbient) {
+  for (const char* pack : {"c172.yaml", "b737.yaml"}) {
+    auto model = testing::make_model(pack);
+    const AircraftModel::Runway runway{{34.0 * testing::kDeg, -118.0 * testing::kDeg, 0.0}, 0.0};
+    ASSERT_TRUE(model->reposition_to_runway(runway).converged) << pack;  // idle, running
+    const double ambient_k = model->outputs().temperature_k;
+    for (const EngineOutputs& e : model->outputs().engines) {
+      EXPECT_TRUE(e.has_egt) << pack;
+      EXPECT_GT(e.egt_k, ambient_k + 300.0) << pack;  // hundreds of kelvin above ambient
+    }
+    const double idle_k = model->outputs().engines[0].egt_k;
+    AircraftControls c = model->controls();
+    c.set_throttle(1.0);
+    model->set_controls(c);
+    for (int i = 0; i < 500; ++i) model->step(0.02);
+    const double full_k = model->outputs().engines[0].egt_k;
+    std::printf("%s EGT at sea level: idle %.0f K, full throttle %.0f K\n", pack, idle_k, full_k);
+    for (std::size_t i = 0; i < model->engine_count(); ++i) model->set_engine_running(i, false);
+    model->step(0.02);
+    for (const EngineOutputs& e : model->outputs().engines) {
+      EXPECT_NEAR(e.egt_k, model->outputs().temperature_k, 0.01) << pack;  // air at the CG
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fedsim::flight
