@@ -322,7 +322,7 @@ TEST_F(FedsimFly, GroundTrimWithTheEngineAtFullThrottleOnTheBrakes) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
   EXPECT_EQ(json_of(run.output)["throttle"].get<double>(), 1.0);
-  const CsvTable csv = CsvTable::load(out);
+  const csv::NumericTable csv = csv::NumericTable::load(out);
   EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 1.0);
   EXPECT_EQ(csv.column("brake_left_cmd").front(), 1.0);
   // Settled at the start: full-throttle static rpm (far above the 550 rpm idle) from row 0.

@@ -1,5 +1,6 @@
 // Trim by Levenberg-Marquardt on all equations together with a numerical Jacobian.
 #include "flight/model/aircraft/trim.hpp"
+#include "common/units/units.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -18,10 +19,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
-constexpr double kFeetToMetres = 0.3048;
-constexpr double kKnotToMps = 1852.0 / 3600.0;
 
 // Tolerances: 1e-4 m/s^2 (1e-5 g) on the forces, 1e-5 rad/s^2 on the moments; tighter than
 // JSBSim's trim (1e-3 ft/s^2 and 1e-4 rad/s^2), reachable because every axis is solved
@@ -30,9 +27,9 @@ constexpr double kForceTolerance = 1e-4;
 constexpr double kMomentTolerance = 1e-5;
 
 // Default angle-of-attack bounds when the pack states none.
-constexpr double kDefaultAlphaMin = -10.0 * kDeg;
-constexpr double kDefaultAlphaMax = 25.0 * kDeg;
-constexpr double kBetaLimit = 20.0 * kDeg;
+constexpr double kDefaultAlphaMin = -10.0 * units::kDegToRad;
+constexpr double kDefaultAlphaMax = 25.0 * units::kDegToRad;
+constexpr double kBetaLimit = 20.0 * units::kDegToRad;
 
 std::string format(const char* fmt, double a) {
   char buffer[64];
@@ -74,7 +71,7 @@ class TrimProblem {
                    kMomentTolerance, kMomentTolerance, kForceTolerance};
     if (ground_) {
       equations_ = {kWDot, kPDot, kQDot};
-      set_bounds({-5.0, -30.0 * kDeg, -30.0 * kDeg}, {50.0, 30.0 * kDeg, 30.0 * kDeg});
+      set_bounds({-5.0, -30.0 * units::kDegToRad, -30.0 * units::kDegToRad}, {50.0, 30.0 * units::kDegToRad, 30.0 * units::kDegToRad});
     } else {
       tas_mps_ = true_airspeed();
       equations_ = {kUDot, kVDot, kWDot, kPDot, kQDot, kRDot};
@@ -159,18 +156,18 @@ class TrimProblem {
 
   /// "hold 4000 ft at 100 KTAS" and the like, for failure messages.
   std::string condition_text() const {
-    const std::string alt = format("%.0f ft", request_.position.alt_m / kFeetToMetres);
-    const std::string speed = format("%.0f", request_.airspeed_mps / kKnotToMps) +
+    const std::string alt = format("%.0f ft", request_.position.alt_m / units::kFtToM);
+    const std::string speed = format("%.0f", request_.airspeed_mps / units::kKtToMps) +
                               (request_.airspeed_is_cas ? " KCAS" : " KTAS");
     switch (request_.kind) {
       case TrimKind::kLevel:
         return "hold " + alt + " at " + speed;
       case TrimKind::kClimb:
         return (request_.flight_path_rad >= 0.0 ? "climb at " : "descend at ") +
-               format("%.1f deg", std::abs(request_.flight_path_rad) / kDeg) + " and " + speed +
+               format("%.1f deg", std::abs(request_.flight_path_rad) / units::kDegToRad) + " and " + speed +
                " at " + alt;
       case TrimKind::kTurn:
-        return "hold a " + format("%.0f deg", std::abs(request_.bank_rad) / kDeg) +
+        return "hold a " + format("%.0f deg", std::abs(request_.bank_rad) / units::kDegToRad) +
                " banked level turn at " + alt + " and " + speed;
       case TrimKind::kGround:
         return "rest on the runway";
@@ -184,7 +181,7 @@ class TrimProblem {
     auto bad = [](const std::string& what) {
       throw std::invalid_argument("trim request: " + what);
     };
-    if (!std::isfinite(r.position.lat_rad) || std::abs(r.position.lat_rad) > kPi / 2 ||
+    if (!std::isfinite(r.position.lat_rad) || std::abs(r.position.lat_rad) > units::kPi / 2 ||
         !std::isfinite(r.position.lon_rad) || !std::isfinite(r.position.alt_m)) {
       bad("position must be finite with |lat| <= 90 deg");
     }
@@ -198,8 +195,8 @@ class TrimProblem {
       return;
     }
     if (!(r.airspeed_mps > 0.0) || !std::isfinite(r.airspeed_mps)) bad("airspeed must be > 0");
-    if (!(std::abs(r.flight_path_rad) < 60.0 * kDeg)) bad("flight path must be within +-60 deg");
-    if (!(std::abs(r.bank_rad) < 80.0 * kDeg)) bad("bank must be within +-80 deg");
+    if (!(std::abs(r.flight_path_rad) < 60.0 * units::kDegToRad)) bad("flight path must be within +-60 deg");
+    if (!(std::abs(r.bank_rad) < 80.0 * units::kDegToRad)) bad("bank must be within +-80 deg");
   }
 
   void set_bounds(const std::vector<double>& lo, const std::vector<double>& hi) {
@@ -283,10 +280,10 @@ class TrimProblem {
     // the front of the lift curve; then Levenberg-Marquardt does the rest.
     Eigen::VectorXd z = Eigen::VectorXd::Zero(unknowns());
     z[kThrottle] = 0.5;
-    if (turn_) z[kTurnRate] = 9.80665 * std::tan(request_.bank_rad) / tas_mps_;
-    double best_alpha = 2.0 * kDeg, best_abs = INFINITY, previous_w_dot = NAN;
+    if (turn_) z[kTurnRate] = units::kStandardGravityMps2 * std::tan(request_.bank_rad) / tas_mps_;
+    double best_alpha = 2.0 * units::kDegToRad, best_abs = INFINITY, previous_w_dot = NAN;
     double previous_alpha = 0.0;
-    for (double alpha = lower_[kAlpha]; alpha <= upper_[kAlpha] + 1e-12; alpha += 1.0 * kDeg) {
+    for (double alpha = lower_[kAlpha]; alpha <= upper_[kAlpha] + 1e-12; alpha += 1.0 * units::kDegToRad) {
       z[kAlpha] = alpha;
       apply(z);
       const double w_dot = all_residuals()[kWDot];
@@ -330,7 +327,7 @@ class TrimProblem {
       const Eigen::Vector3d arm = c.position_m - cg;
       lowest = std::max(lowest, -std::sin(theta) * arm.x() + std::cos(theta) * arm.z());
     }
-    const double sag = model_.outputs().mass_kg * 9.80665 / std::max(stiffness, 1.0);
+    const double sag = model_.outputs().mass_kg * units::kStandardGravityMps2 / std::max(stiffness, 1.0);
     z[kHeight] = lowest - sag;
     z[kTheta] = theta;
     return z;
@@ -452,12 +449,12 @@ std::string failure_reason(const TrimProblem& problem, const Eigen::VectorXd& z,
     using P = TrimProblem;
     if (at_upper(P::kAlpha)) {
       return "angle of attack at its limit of " +
-             format("%.1f deg", problem.upper()[P::kAlpha] / kDeg) + ": " + cannot +
+             format("%.1f deg", problem.upper()[P::kAlpha] / units::kDegToRad) + ": " + cannot +
              " (the wing cannot carry the aircraft: below the stall speed)";
     }
     if (at_lower(P::kAlpha)) {
       return "angle of attack at its lower limit of " +
-             format("%.1f deg", problem.lower()[P::kAlpha] / kDeg) + ": " + cannot;
+             format("%.1f deg", problem.lower()[P::kAlpha] / units::kDegToRad) + ": " + cannot;
     }
     if (at_upper(P::kThrottle)) return "throttle saturated at 1.0: " + cannot;
     if (at_lower(P::kThrottle)) {

@@ -1,6 +1,7 @@
 // Piston engine driving a propeller: shaft-speed dynamics, blade-angle control and the
 // resulting force and moment on the airframe.
 #include "flight/model/systems/piston_powerplant.hpp"
+#include "common/units/units.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -14,7 +15,6 @@
 namespace fedsim::flight {
 
 namespace {
-constexpr double kRadpsPerRpm = 2.0 * std::numbers::pi / 60.0;
 
 // Runs a sub-model's validate() and prefixes its message with the sub-model's field name.
 template <typename SubParams>
@@ -49,13 +49,13 @@ PistonPowerplant::PistonPowerplant(Params params)
 }
 
 void PistonPowerplant::reset(double engine_rpm) {
-  omega_radps_ = std::max(engine_rpm, 0.0) / params_.gear_ratio * kRadpsPerRpm;
+  omega_radps_ = std::max(engine_rpm, 0.0) / params_.gear_ratio * units::kRpmToRadps;
   governor_.reset();
   const Inputs still_air;
   fill_outputs(still_air, evaluate(still_air));
 }
 
-double PistonPowerplant::propeller_rpm() const { return omega_radps_ / kRadpsPerRpm; }
+double PistonPowerplant::propeller_rpm() const { return omega_radps_ / units::kRpmToRadps; }
 
 PistonPowerplant::Snapshot PistonPowerplant::evaluate(const Inputs& in) const {
   Snapshot s;

@@ -1,6 +1,7 @@
 // Turbofan engine: thrust from idle and maximum thrust tables of Mach and altitude, spool
 // dynamics for N1 and N2, fuel flow from TSFC.
 #include "flight/model/systems/turbofan.hpp"
+#include "common/units/units.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -17,10 +18,9 @@ constexpr double kSeaLevelDensityKgpm3 = 1.225;
 constexpr double kLapseRateKpm = 0.0065;
 constexpr double kTropopauseM = 11000.0;
 constexpr double kGasConstant = 287.05287;  // J/(kg K), dry air
-constexpr double kGravity = 9.80665;        // m/s^2
 constexpr double kTropopauseTemperatureK = kSeaLevelTemperatureK - kLapseRateKpm * kTropopauseM;
 // Density ratio exponent in the troposphere: g / (L R) - 1.
-constexpr double kTroposphereDensityExponent = kGravity / (kLapseRateKpm * kGasConstant) - 1.0;
+constexpr double kTroposphereDensityExponent = units::kStandardGravityMps2 / (kLapseRateKpm * kGasConstant) - 1.0;
 
 double tropopause_density_kgpm3() {
   return kSeaLevelDensityKgpm3 *
@@ -74,7 +74,7 @@ double Turbofan::density_altitude_m(double density_kgpm3) {
            (1.0 - std::pow(sigma, 1.0 / kTroposphereDensityExponent));
   }
   // Isothermal layer: rho = rho_11 exp(-g (h - 11 km) / (R T_11)).
-  return kTropopauseM + kGasConstant * kTropopauseTemperatureK / kGravity * std::log(rho_11 / rho);
+  return kTropopauseM + kGasConstant * kTropopauseTemperatureK / units::kStandardGravityMps2 * std::log(rho_11 / rho);
 }
 
 void Turbofan::reset(bool running) {

@@ -1,5 +1,6 @@
 // Tests of the control-surface actuator: command mapping, lag, rate limit and stops.
 #include "flight/model/systems/actuator.hpp"
+#include "common/units/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,7 @@
 namespace fedsim::flight {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = units::kDegToRad;
 
 // JSBSim c172x elevator: command -1..1 maps to -28..+23 deg, lag 60 rad/s, clip +-0.34 rad.
 Actuator::Params c172_elevator() {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include "common/units/units.hpp"
 #include <Eigen/Geometry>
 #include <numbers>
 #include <vector>
@@ -22,7 +23,7 @@
 namespace fedsim::flight::reference {
 
 // Unit conversions (exact definitions).
-constexpr double kFt = 0.3048;
+constexpr double kFt = units::kFtToM;
 constexpr double kIn = 0.0254;
 constexpr double kLb = 0.45359237;            // kg
 constexpr double kLbf = 4.4482216152605;      // N
@@ -30,8 +31,8 @@ constexpr double kHp = 745.69987158227022;    // W
 constexpr double kInHg = 3386.389;            // Pa
 constexpr double kSlugFt2 = 1.3558179483314;  // kg m^2
 constexpr double kLbfPerFt = kLbf / kFt;      // N/m
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kG = 9.80665;
+constexpr double kDeg = units::kDegToRad;
+constexpr double kG = units::kStandardGravityMps2;
 
 // JSBSim structural inches (x aft, z up) to pack metres (x forward, z down).
 inline Eigen::Vector3d from_structural_in(double x, double y, double z) {

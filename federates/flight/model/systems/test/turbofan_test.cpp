@@ -1,6 +1,7 @@
 // Tests of the turbofan model with CFM56 figures: static thrust, lapse, idle, spool dynamics,
 // fuel flow, failure and the moment of an off-centre engine.
 #include "flight/model/systems/turbofan.hpp"
+#include "common/units/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,13 +22,13 @@ struct Air {
   double density_kgpm3, temperature_k;
 };
 Air isa(double altitude_m) {
-  const double exponent = 9.80665 / (0.0065 * 287.05287) - 1.0;  // g / (L R) - 1
+  const double exponent = units::kStandardGravityMps2 / (0.0065 * 287.05287) - 1.0;  // g / (L R) - 1
   if (altitude_m <= 11000.0) {
     const double t = 288.15 - 0.0065 * altitude_m;
     return {1.225 * std::pow(t / 288.15, exponent), t};
   }
   const double rho11 = 1.225 * std::pow(216.65 / 288.15, exponent);
-  return {rho11 * std::exp(-9.80665 * (altitude_m - 11000.0) / (287.05287 * 216.65)), 216.65};
+  return {rho11 * std::exp(-units::kStandardGravityMps2 * (altitude_m - 11000.0) / (287.05287 * 216.65)), 216.65};
 }
 
 Turbofan::Inputs flight(double throttle, double mach, double altitude_m) {
