@@ -67,6 +67,21 @@ const std::vector<const TopicInfo*>& all();
 const TopicInfo* find(std::string_view name);
 /// True for the backbone topics every federate uses through the runtime.
 bool is_backbone(std::string_view name);
+
+/// Calls visitor(topic) with the typed catalogue topic of that name (a generic lambda sees its
+/// message type); false if the catalogue has no such topic.
+template <class Visitor>
+bool visit(std::string_view name, Visitor&& visitor) {
+  auto try_one = [&](const auto& topic) {
+    if (topic.name() != name) return false;
+    visitor(topic);
+    return true;
+  };
+  return try_one(frame_tick) || try_one(frame_done) || try_one(sim_command) ||
+         try_one(federate_status) || try_one(pilot_controls) || try_one(aircraft_state) ||
+         try_one(engine_state) || try_one(navigation_state) || try_one(motion_state) ||
+         try_one(control_loading_state) || try_one(visual_status);
+}
 }  // namespace topics
 
 }  // namespace fedsim::runtime

@@ -1,5 +1,7 @@
 #include "io/io_component.hpp"
 
+#include "io/model/input_profile.hpp"
+
 namespace fedsim::io {
 
 void to_message(const ControlInputs& in, msg::PilotControls& out) {
@@ -36,6 +38,34 @@ void IoComponent::step(const runtime::FrameContext& frame) {
   to_message(controls_, sample_);
   sample_.stamp(frame.stamp());
   pilot_controls_.write(sample_);
+}
+
+runtime::FederateProgram program() {
+  struct Options {
+    std::string profile;
+    int aircraft_id = 0;
+    std::string controls_qos;
+  };
+  auto o = std::make_shared<Options>();
+  runtime::FederateProgram p;
+  p.program = "fedsim-io";
+  p.default_name = "io";
+  p.description = "publishes pilot controls every frame from an input source";
+  p.add_options = [o](CLI::App& app) {
+    app.add_option("--profile", o->profile, "scripted input profile (CSV: time_s + channels)")
+        ->required();
+    app.add_option("--aircraft-id", o->aircraft_id, "aircraft the controls fly")
+        ->check(CLI::Range(0, 65535))
+        ->capture_default_str();
+    app.add_option("--controls-qos", o->controls_qos,
+                   "QoS profile of fedsim/pilot_controls (default: the catalogue's)");
+  };
+  p.make_component = [o](const runtime::FederateOptions& common) {
+    auto source = std::make_unique<InputProfile>(InputProfile::load_file(o->profile));
+    return std::unique_ptr<runtime::Component>(
+        std::make_unique<IoComponent>(common.name, std::move(source), o->aircraft_id, o->controls_qos));
+  };
+  return p;
 }
 
 }  // namespace fedsim::io

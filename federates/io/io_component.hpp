@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/runtime/component.hpp"
+#include "common/runtime/federate_main.hpp"
 #include "io/model/input_source.hpp"
 
 #include <memory>
@@ -30,5 +31,8 @@ class IoComponent final : public runtime::Component {
   ControlInputs controls_ = default_controls();
   msg::PilotControls sample_;
 };
+
+/// fedsim-io as a program: --profile (scripted input, CSV), --aircraft-id, --controls-qos.
+runtime::FederateProgram program();
 
 }  // namespace fedsim::io

@@ -18,7 +18,7 @@
 #include "common/runtime/subscription.hpp"
 #include "common/util/latency_stats.hpp"
 #include "timing/model/ack_tracker.hpp"
-#include "timing/model/run_control.hpp"
+#include "common/frame_clock/run_control.hpp"
 
 #include <spdlog/logger.h>
 

@@ -211,6 +211,8 @@ void terminate(Child& c) {
   kill(c.pid, SIGTERM);
 }
 
+}  // namespace
+
 int run_after_commands(const Deployment& d, const std::map<std::string, std::string>& vars,
                        const std::string& bin_dir, const std::string& log_dir, bool quiet) {
   int index = 0;
@@ -235,9 +237,19 @@ int run_after_commands(const Deployment& d, const std::map<std::string, std::str
   return 0;
 }
 
-}  // namespace
+std::string bin_dir() { return self_dir(); }
+
+std::map<std::string, std::string> deployment_vars(const std::string& deployment_path,
+                                                   const std::string& out_dir) {
+  return {{"SOURCE_DIR", FEDSIM_SOURCE_DIR},
+          {"DATA_DIR", FEDSIM_DATA_DIR},
+          {"DEPLOY_DIR", fs::absolute(deployment_path).parent_path().string()},
+          {"OUT_DIR", fs::absolute(out_dir).string()},
+          {"BIN_DIR", self_dir()}};
+}
 
 int run_deployment(const RunOptions& options) {
+  if (options.in_process) return run_in_process(options);
   runtime::install_shutdown_handler();
   Deployment d;
   std::vector<std::unique_ptr<Child>> children;
@@ -255,11 +267,7 @@ int run_deployment(const RunOptions& options) {
     fs::create_directories(out_dir);
     log_dir = out_dir + "/logs";
     fs::create_directories(log_dir);
-    vars = {{"SOURCE_DIR", FEDSIM_SOURCE_DIR},
-            {"DATA_DIR", FEDSIM_DATA_DIR},
-            {"DEPLOY_DIR", fs::absolute(options.deployment_path).parent_path().string()},
-            {"OUT_DIR", fs::absolute(out_dir).string()},
-            {"BIN_DIR", bin_dir}};
+    vars = deployment_vars(options.deployment_path, out_dir);
     dds.name = "fedsim-run";
     dds.domain_id = domain;
     dds.qos_file = substitute(d.qos_file, vars);

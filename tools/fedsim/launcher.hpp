@@ -5,6 +5,7 @@
 
 #include "fedsim/deployment.hpp"
 
+#include <map>
 #include <string>
 
 namespace fedsim::launcher {
@@ -18,9 +19,24 @@ struct RunOptions {
   double stop_grace_s = 5.0;     // SIGTERM -> SIGKILL
   double progress_period_s = 2.0;
   bool quiet = false;            // do not echo federate output (it still goes to the log files)
+  bool in_process = false;       // compose the federates in this process (no DDS, lockstep)
 };
 
 /// Runs the deployment; returns the process exit code (0 = every federate stopped cleanly).
 int run_deployment(const RunOptions& options);
+
+/// Runs the deployment's federates as components in this process (runtime::Composition), in
+/// lockstep for the timing arguments' --frames, recording as its `fedsim record` member asks;
+/// then its after-commands. Every federate must be a component program (see in_process.hpp).
+int run_in_process(const RunOptions& options);
+
+/// The ${...} variables of a deployment's arguments.
+std::map<std::string, std::string> deployment_vars(const std::string& deployment_path,
+                                                   const std::string& out_dir);
+/// Where the fedsim binaries are (this program's folder).
+std::string bin_dir();
+/// Runs the deployment's after-commands in order; 1 if one failed (named on stderr).
+int run_after_commands(const Deployment& d, const std::map<std::string, std::string>& vars,
+                       const std::string& bin_dir, const std::string& log_dir, bool quiet);
 
 }  // namespace fedsim::launcher

@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--progress", run.progress_period_s, "seconds between progress lines (0 = off)")
       ->capture_default_str();
   run_cmd->add_flag("--quiet", run.quiet, "do not echo federate output (logs are still kept)");
+  run_cmd->add_flag("--in-process", run.in_process,
+                    "compose the federates in this process: no DDS, lockstep, --frames from the "
+                    "timing arguments; byte-identical to the DDS lockstep run");
   int exit_code = 0;
   run_cmd->callback([&] { exit_code = fedsim::launcher::run_deployment(run); });
 

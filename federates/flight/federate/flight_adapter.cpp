@@ -93,7 +93,8 @@ AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMod
   return c.clamped();
 }
 
-void fill_aircraft_state(const AircraftOutputs& out, msg::AircraftState& s) {
+void fill_aircraft_state(const AircraftOutputs& out, const AircraftControls& flown,
+                         msg::AircraftState& s) {
   s.latitude_rad(out.geodetic.lat_rad);
   s.longitude_rad(out.geodetic.lon_rad);
   s.altitude_msl_m(out.geodetic.alt_m);
@@ -109,6 +110,12 @@ void fill_aircraft_state(const AircraftOutputs& out, msg::AircraftState& s) {
   copy3(out.omega_dot_b_rps2, s.omega_dot_body_rps2());
   copy3(out.acceleration_b_mps2, s.accel_body_mps2());
   copy3(out.specific_force_eye_b_mps2, s.specific_force_eye_mps2());
+  copy3(out.velocity_b_dot_mps2, s.velocity_body_dot_mps2());
+  s.load_factor_z(out.load_factor_z);
+  s.north_m(out.north_m);
+  s.east_m(out.east_m);
+  s.ground_speed_mps(out.ground_speed_mps);
+  s.climb_rate_mps(out.climb_rate_mps);
   auto& air = s.air();
   air.tas_mps(out.tas_mps);
   air.cas_mps(out.cas_mps);
@@ -121,16 +128,45 @@ void fill_aircraft_state(const AircraftOutputs& out, msg::AircraftState& s) {
   air.temperature_k(out.temperature_k);
   air.density_kgpm3(out.density_kgpm3);
   copy3(out.wind_ned_mps, air.wind_ned_mps());
+  air.pressure_altitude_m(out.pressure_altitude_m);
   s.elevator_rad(out.elevator_rad);
   s.aileron_rad(out.aileron_rad);
   s.rudder_rad(out.rudder_rad);
   s.flap_rad(out.flap_rad);
   s.gear_position(out.gear_norm);
+  s.flap_norm(out.flap_norm);
+  s.speedbrake_norm(out.speedbrake_norm);
+  s.spoiler_norm(out.spoiler_norm);
+  auto& c = s.controls();
+  c.elevator(flown.elevator_command());
+  c.aileron(flown.aileron_command());
+  c.rudder(flown.rudder_command());
+  for (std::size_t e = 0; e < c.throttle().size(); ++e) c.throttle()[e] = flown.throttle[e];
+  c.flaps(flown.flaps);
+  c.speedbrake(flown.speedbrake);
+  c.gear_down(flown.gear_down);
+  c.brake_left(flown.brake_left);
+  c.brake_right(flown.brake_right);
+  c.steering(flown.steering);
+  auto& aero = s.aero();
+  aero.lift(out.aero.CL);
+  aero.drag(out.aero.CD);
+  aero.side(out.aero.CY);
+  aero.roll(out.aero.Cl);
+  aero.pitch(out.aero.Cm);
+  aero.yaw(out.aero.Cn);
+  s.stalled(out.stalled);
+  copy3(out.total_force_b_n, s.force_body_n());
+  copy3(out.total_moment_b_nm, s.moment_body_nm());
   s.mass_kg(out.mass_kg);
   s.fuel_kg(out.fuel_kg);
+  copy3(out.cg_m, s.cg_pack_m());
   s.total_thrust_n(out.total_thrust_n);
   s.engine_count(static_cast<uint16_t>(out.engines.size()));
   s.on_ground(out.any_contact);
+  s.weight_on_wheels(out.weight_on_wheels);
+  s.gear_normal_force_n(out.gear_normal_force_n);
+  s.dropped_steps(out.dropped_steps);
   const std::size_t n = std::min<std::size_t>(out.contacts.size(), s.gear().size());
   s.gear_count(static_cast<uint16_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
@@ -147,6 +183,9 @@ void fill_engine_state(const EngineOutputs& e, std::size_t index, msg::EngineSta
   s.failed(e.failed);
   s.thrust_n(e.thrust_n);
   s.rpm(e.rpm);
+  s.propeller_rpm(e.propeller_rpm);
+  s.throttle(e.throttle);
+  s.starved(e.starved);
   s.n1_pct(e.n1_pct);
   s.n2_pct(e.n2_pct);
   s.manifold_pressure_pa(e.manifold_pressure_pa);

@@ -28,8 +28,10 @@ std::optional<std::string> check_pilot_controls(const msg::PilotControls& in);
 AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,
                                        const AircraftControls& trimmed);
 
-/// Fills an AircraftState sample from the model's outputs (no allocation).
-void fill_aircraft_state(const AircraftOutputs& out, msg::AircraftState& state);
+/// Fills an AircraftState sample from the model's outputs and the controls it flew (no
+/// allocation). Every field of the message is set (tested).
+void fill_aircraft_state(const AircraftOutputs& out, const AircraftControls& flown,
+                         msg::AircraftState& state);
 /// Fills one engine's EngineState sample.
 void fill_engine_state(const EngineOutputs& engine, std::size_t index, msg::EngineState& state);
 

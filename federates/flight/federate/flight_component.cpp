@@ -68,7 +68,7 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
 }
 
 void FlightComponent::write_state(const runtime::FrameContext& frame) {
-  fill_aircraft_state(setup_.model->outputs(), state_);
+  fill_aircraft_state(setup_.model->outputs(), setup_.model->controls(), state_);
   state_.stamp(frame.stamp());
   aircraft_state_.write(state_);
   const auto& engines = setup_.model->outputs().engines;

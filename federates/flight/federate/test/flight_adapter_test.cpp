@@ -77,7 +77,7 @@ TEST(FlightAdapter, StateCarriesOutputsWithoutLosingPrecision) {
   out.contacts[1].weight_on_wheels = true;
   out.contacts[1].normal_force_n = 4000.0;
   msg::AircraftState s;
-  fill_aircraft_state(out, s);
+  fill_aircraft_state(out, AircraftControls{}, s);
   EXPECT_EQ(s.latitude_rad(), out.geodetic.lat_rad);  // double precision end to end
   EXPECT_EQ(s.longitude_rad(), out.geodetic.lon_rad);
   EXPECT_DOUBLE_EQ(s.air().tas_mps(), 51.4);

@@ -1,4 +1,4 @@
-#include "timing/model/run_control.hpp"
+#include "common/frame_clock/run_control.hpp"
 
 namespace fedsim::timing {
 

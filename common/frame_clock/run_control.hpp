@@ -1,4 +1,5 @@
-// The federation's run state and simulation clock (pure logic, no DDS): turns instructor
+// The federation's run state and simulation clock (pure logic, no DDS; used by fedsim-timing and
+// by the in-process composition): turns instructor
 // commands into the fields of successive frame ticks.
 //   RUN    - sim time advances by one frame period per tick;
 //   FREEZE - ticks continue (displays refresh) but sim time stands still (dt = 0);
