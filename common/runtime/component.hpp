@@ -35,10 +35,21 @@ struct FrameContext {
 
   bool running() const { return run_state == msg::RUN_STATE_RUN; }
   bool resetting() const { return run_state == msg::RUN_STATE_RESET; }
-  msg::FrameStamp stamp() const {
+  /// Simulation time at the end of the frame (the next frame's start time): after a RUN
+  /// frame's step, (sim_frame + 1) * dt, computed as the timing federate computes sim time.
+  double end_time_s() const {
+    return running() ? static_cast<double>(sim_frame + 1) * dt_s : sim_time_s;
+  }
+  /// The stamp of a sample sampled at the start of the frame (inputs, commands).
+  msg::FrameStamp stamp() const { return make_stamp(sim_time_s); }
+  /// The stamp of a state computed by the frame's step: valid at the end of the frame.
+  msg::FrameStamp end_stamp() const { return make_stamp(end_time_s()); }
+
+ private:
+  msg::FrameStamp make_stamp(double time_s) const {
     msg::FrameStamp s;
     s.frame(frame);
-    s.sim_time_s(sim_time_s);
+    s.sim_time_s(time_s);
     return s;
   }
 };

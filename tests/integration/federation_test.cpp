@@ -413,11 +413,15 @@ TEST(Federation, FlightFederateRefusesABadAircraftPackBeforeJoining) {
 }
 
 
-// Lockstep is reproducible end to end: the same deployment flown twice (scripted doublets into
-// the flight model, recorded every frame) gives byte-identical recordings.
-TEST(Federation, LockstepFlightIsIdenticalRunToRun) {
+// Lockstep is reproducible end to end, in turbulence: the same deployment (scripted doublets
+// into the flight model in moderate turbulence, recorded every frame) flown twice as a DDS
+// lockstep federation and once composed in-process gives byte-identical recordings; a
+// different turbulence seed changes them (the comparison can fail).
+TEST(Federation, LockstepFlightIsIdenticalRunToRunAndInProcess) {
   const std::string dir = temp_dir("determinism");
-  std::ofstream(dir + "/flight.yaml") << R"(name: determinism
+  auto deployment = [&](int seed) {
+    const std::string path = dir + "/flight_seed" + std::to_string(seed) + ".yaml";
+    std::ofstream(path) << R"(name: determinism
 mode: lockstep
 timing: {args: [--frames, "600"]}
 federates:
@@ -425,25 +429,34 @@ federates:
   - name: flight
     binary: fedsim-flight
     args: [--aircraft, "${DATA_DIR}/aircraft/c172.yaml", --trim, level, --alt-ft, "4000",
-           --ktas, "100", --controls, relative, --state-qos, lockstep_data]
+           --ktas, "100", --controls, relative, --state-qos, lockstep_data,
+           --turbulence, moderate, --seed, ")" << seed << R"("]
   - name: recorder
     binary: fedsim
-    args: [record, --topics, fedsim/aircraft_state, --out, "${OUT_DIR}", --lockstep-member,
-           --progress, "0"]
+    args: [record, --topics, "fedsim/aircraft_state,fedsim/engine_state", --out, "${OUT_DIR}",
+           --lockstep-member, --progress, "0"]
 )";
-  std::string recordings[2];
-  for (int run = 0; run < 2; ++run) {
-    const std::string out = dir + "/run" + std::to_string(run);
-    ChildProcess fedsim({bin("fedsim"), "run", dir + "/flight.yaml", "--domain",
-                         std::to_string(140 + run), "--out", out, "--quiet"},
-                        dir + "/run" + std::to_string(run) + ".log");
-    ASSERT_TRUE(fedsim.wait(90)) << fedsim.output();
-    ASSERT_EQ(fedsim.exit_code(), 0) << fedsim.output();
-    recordings[run] = read_file(out + "/fedsim_aircraft_state.csv");
-  }
-  const auto rows = std::count(recordings[0].begin(), recordings[0].end(), '\n');
-  EXPECT_EQ(rows, 601);  // header + every frame
-  EXPECT_TRUE(recordings[0] == recordings[1]) << "the two lockstep runs differ";
+    return path;
+  };
+  auto fly = [&](const std::string& yaml, const std::string& name, std::vector<std::string> extra) {
+    const std::string out = dir + "/" + name;
+    std::vector<std::string> argv = {bin("fedsim"), "run", yaml, "--out", out, "--quiet"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    ChildProcess fedsim(argv, dir + "/" + name + ".log");
+    EXPECT_TRUE(fedsim.wait(90)) << fedsim.output();
+    EXPECT_EQ(fedsim.exit_code(), 0) << fedsim.output();
+    return read_file(out + "/fedsim_aircraft_state.csv") + read_file(out + "/fedsim_engine_state.csv");
+  };
+  const std::string seed7 = deployment(7);
+  const std::string dds_a = fly(seed7, "dds_a", {"--domain", "140"});
+  const std::string dds_b = fly(seed7, "dds_b", {"--domain", "141"});
+  const std::string local = fly(seed7, "in_process", {"--in-process"});
+  const std::string local_seed8 = fly(deployment(8), "in_process_seed8", {"--in-process"});
+  const auto rows = std::count(dds_a.begin(), dds_a.end(), '\n');
+  EXPECT_EQ(rows, 2 * 601);  // two files: header + every frame (one engine)
+  EXPECT_TRUE(dds_a == dds_b) << "the two DDS lockstep runs differ";
+  EXPECT_TRUE(dds_a == local) << "the in-process composition differs from the DDS federation";
+  EXPECT_FALSE(local == local_seed8) << "a different turbulence seed left the recording unchanged";
 }
 
 

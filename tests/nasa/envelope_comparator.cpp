@@ -15,6 +15,7 @@ ChannelComparison EnvelopeComparator::compare(const TimeHistory& fedsim, const s
   result.channel = channel;
   result.group = group;
   result.margin = margin;
+  result.reference_samples = static_cast<int>(reference_.times().size());
   if (!fedsim.has(channel) || fedsim.empty()) return result;
   const double t_first = fedsim.times().front() - 1e-9;
   const double t_last = fedsim.times().back() + 1e-9;
@@ -22,7 +23,7 @@ ChannelComparison EnvelopeComparator::compare(const TimeHistory& fedsim, const s
     if (t < t_first || t > t_last) continue;
     const double value = is_angle ? fedsim.angle_at(channel, t) : fedsim.at(channel, t);
     const Envelope e = reference_.envelope(channel, t, is_angle, value);
-    if (e.runs == 0) return result;
+    if (e.runs == 0) continue;
     const double excess = std::max({0.0, value - e.high, e.low - value});
     if (excess > result.max_excess) {
       result.max_excess = excess;

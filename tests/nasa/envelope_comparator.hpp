@@ -16,21 +16,26 @@ struct ChannelComparison {
   std::string channel;
   std::string group;
   int samples = 0;                 // reference times compared
+  int reference_samples = 0;       // reference times there are: every one must be compared
   int runs = 0;                    // NASA tools that report the channel
   double max_excess = 0.0;         // largest distance outside [low, high] (0 = always inside)
   double time_of_max_excess = 0.0;
   double max_envelope_width = 0.0; // largest NASA spread (high - low) during the run
   double max_distance_to_middle = 0.0;  // largest |fedsim - (low + high) / 2|
   double margin = 0.0;             // allowed excess
-  bool passed() const { return samples > 0 && max_excess <= margin; }
+  bool passed() const {
+    return samples > 0 && samples == reference_samples && max_excess <= margin;
+  }
 };
 
 class EnvelopeComparator {
  public:
   explicit EnvelopeComparator(const NasaReference& reference) : reference_(reference) {}
 
-  /// Compares at every reference sample time inside the fedsim record. A channel no NASA tool
-  /// recorded gives samples == 0 (and does not pass).
+  /// Compares at every reference sample time. A reference time outside the fedsim record, or
+  /// one where no NASA tool recorded the channel, is not compared, and a comparison that
+  /// missed any reference time does not pass. A channel no NASA tool recorded gives
+  /// samples == 0.
   ChannelComparison compare(const TimeHistory& fedsim, const std::string& channel,
                             const std::string& group, bool is_angle, double margin) const;
 

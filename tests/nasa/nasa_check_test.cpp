@@ -170,6 +170,19 @@ TEST(EnvelopeComparator, MeasuresTheDistanceOutsideTheEnvelope) {
   EXPECT_EQ(inside.max_excess, 0.0);
   EXPECT_TRUE(inside.passed());
   EXPECT_EQ(comparator.compare(probe, "psi_rad", "euler", true, 1.0).samples, 0);
+  // A record that stops half way is inside the envelope where it exists, and still fails:
+  // every reference time must be compared.
+  TimeHistory half({"v_down_mps"});
+  for (double t : reference.times()) {
+    if (t > 15.0) break;
+    const Envelope vd = reference.envelope("v_down_mps", t, false, 0.0);
+    half.append(t, {0.5 * (vd.low + vd.high)});
+  }
+  const ChannelComparison partial = comparator.compare(half, "v_down_mps", "velocity", false, 0.0);
+  EXPECT_EQ(partial.max_excess, 0.0);
+  EXPECT_EQ(partial.reference_samples, 61);
+  EXPECT_LT(partial.samples, 61);
+  EXPECT_FALSE(partial.passed());
 }
 
 TEST(EnvelopeComparator, ComparesAnglesAcrossTheWrap) {

@@ -6,6 +6,7 @@
 #include <fastrtps/types/DynamicDataFactory.h>
 #include <fastrtps/types/DynamicPubSubType.h>
 
+#include <functional>
 #include <stdexcept>
 
 namespace fedsim::tools {
@@ -18,6 +19,10 @@ struct InProcessRecorder::Stream {
   ftypes::DynamicData* scratch = nullptr;  // reused for every sample
   eprosima::fastrtps::rtps::SerializedPayload_t payload;
   std::uint64_t samples = 0;
+  // With every_n_frames > 1: the samples of the newest frame skipped, recorded at close if no
+  // later frame was recorded (the last frame is always kept).
+  std::vector<std::function<void()>> skipped_last_frame;
+  std::uint64_t skipped_frame = 0;
 
   ~Stream() {
     if (scratch) ftypes::DynamicDataFactory::get_instance()->delete_data(scratch);
@@ -58,8 +63,15 @@ InProcessRecorder::InProcessRecorder(runtime::Composition& composition,
       s->scratch = ftypes::DynamicDataFactory::get_instance()->create_data(s->type);
       composition.on_written(topic, std::function<void(const T&)>([s, every_n_frames](const T& sample) {
         if constexpr (runtime::Stamped<T>) {
-          if (sample.stamp().frame() % every_n_frames != 0) return;
+          const std::uint64_t frame = sample.stamp().frame();
+          if (frame % every_n_frames != 0) {
+            if (frame != s->skipped_frame) s->skipped_last_frame.clear();
+            s->skipped_frame = frame;
+            s->skipped_last_frame.push_back([s, sample] { s->record(sample); });
+            return;
+          }
         }
+        s->skipped_last_frame.clear();
         s->record(sample);
       }));
     });
@@ -82,6 +94,8 @@ void InProcessRecorder::drain() {
 
 void InProcessRecorder::close() {
   for (auto& s : streams_) {
+    for (const auto& record : s->skipped_last_frame) record();
+    s->skipped_last_frame.clear();
     s->recorder->drain();
     s->recorder->flush();
   }

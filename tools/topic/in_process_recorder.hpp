@@ -18,7 +18,8 @@ namespace fedsim::tools {
 class InProcessRecorder {
  public:
   /// Records every sample written on `topics` (catalogue names) into `out_dir` (created);
-  /// with `every_n_frames` > 1 only samples stamped with a multiple of it. Throws
+  /// with `every_n_frames` > 1 only samples stamped with a multiple of it, and those of the
+  /// last frame (written at close). Throws
   /// std::invalid_argument naming an unknown topic.
   InProcessRecorder(runtime::Composition& composition, const std::vector<std::string>& topics,
                     const std::filesystem::path& out_dir, std::uint64_t every_n_frames = 1);

@@ -69,12 +69,12 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
 
 void FlightComponent::write_state(const runtime::FrameContext& frame) {
   fill_aircraft_state(setup_.model->outputs(), setup_.model->controls(), state_);
-  state_.stamp(frame.stamp());
+  state_.stamp(frame.end_stamp());  // the state after this frame's step
   aircraft_state_.write(state_);
   const auto& engines = setup_.model->outputs().engines;
   for (std::size_t i = 0; i < engines.size(); ++i) {
     fill_engine_state(engines[i], i, engine_);
-    engine_.stamp(frame.stamp());
+    engine_.stamp(frame.end_stamp());
     engine_state_.write(engine_);
   }
 }

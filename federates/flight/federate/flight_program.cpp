@@ -67,9 +67,6 @@ FlightSetup prepare_flight(const FlightOptions& o) {
   setup.model = std::make_unique<AircraftModel>(load_aircraft_pack(resolve_pack_path(o.aircraft)),
                                                 model_options(o));
   setup.start = establish_start(o.start, *setup.model);
-  if (setup.start.trim && !setup.start.trim->converged) {
-    throw runtime::ProgramError(kExitTrimFailed, "trim failed: " + setup.start.trim->reason);
-  }
   if (!o.turbulence.empty()) {
     WeatherSettings weather = setup.model->weather();
     weather.turbulence = severity_named(o.turbulence);
@@ -81,9 +78,16 @@ FlightSetup prepare_flight(const FlightOptions& o) {
   return setup;
 }
 
+void require_trimmed(const FlightSetup& setup) {
+  if (setup.start.trim && !setup.start.trim->converged) {
+    throw runtime::ProgramError(kExitTrimFailed, "trim failed: " + setup.start.trim->reason);
+  }
+}
+
 std::unique_ptr<FlightComponent> make_flight_component(const std::string& name,
                                                        const FlightOptions& o) {
   FlightSetup setup = prepare_flight(o);
+  require_trimmed(setup);
   const std::optional<TrimResult> trim = setup.start.trim;
   auto component = std::make_unique<FlightComponent>(name, std::move(setup), o.state_qos);
   component->log().info("aircraft={} earth={} integrator={} substeps={} controls={}", o.aircraft,

@@ -34,9 +34,11 @@ void add_flight_options(CLI::App& app, FlightOptions& options);
 /// The model options the command line asks for.
 AircraftModel::Options model_options(const FlightOptions& options);
 /// Loads the pack, builds the model, starts it (IC file or trim), loads the runway table.
-/// Throws std::invalid_argument / util::ConfigError for bad input and runtime::ProgramError
-/// (kExitTrimFailed) for a trim that does not converge.
+/// Throws std::invalid_argument / util::ConfigError for bad input. A trim that does not
+/// converge is returned (start.trim->converged false): see require_trimmed.
 FlightSetup prepare_flight(const FlightOptions& options);
+/// Throws runtime::ProgramError (kExitTrimFailed) with the reason if the start trim failed.
+void require_trimmed(const FlightSetup& setup);
 /// The flight component, logged as the federate logs it.
 std::unique_ptr<FlightComponent> make_flight_component(const std::string& name,
                                                        const FlightOptions& options);

@@ -1,84 +1,97 @@
-// fedsim-fly: the flight model in batch mode. Starts an aircraft from an initial-condition file
-// or a trim, flies it for a given time at a given frame rate with controls from a scripted
-// profile, and writes one CSV row per frame. No DDS, no wall clock in the loop.
+// fedsim-fly: the flight model in batch mode - the single-federate case of the in-process
+// composition. The flight component (and, with --inputs, an I/O component flying a scripted
+// profile) run frame by frame with the federation's frame rule, no DDS and no wall clock in
+// the loop; every sample is recorded to DIR/<topic>.csv exactly as `fedsim record` records a
+// federation, so a batch run and a federated run share their files and columns.
+//
+// Frame 0 is frozen (the start state at t = 0); frames 1..N fly one period each. As in the
+// federation, controls sampled in frame k act in frame k+1.
 //
 // Exit codes: 0 done; 2 bad input (unknown pack or option, bad profile or IC file: nothing is
 // written); 3 the trim did not converge (its JSON and the reason are printed, nothing written);
-// 1 a failure while running (the partial CSV is removed).
-#include <CLI/CLI.hpp>
+// 1 a failure while running or faults counted (the output folder is kept for inspection).
+#include "common/runtime/composition.hpp"
+#include "flight/fly/fly_options.hpp"
+#include "io/io_component.hpp"
+#include "io/model/input_profile.hpp"
+#include "tools/topic/in_process_recorder.hpp"
+
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
-#include <optional>
-
-#include "common/util/config_node.hpp"
-#include "flight/fly/batch_flight.hpp"
-#include "flight/fly/fly_options.hpp"
-#include "io/model/input_profile.hpp"
 
 using namespace fedsim;
 using namespace fedsim::flight;
 
 namespace {
-constexpr int kBadInput = 2;
-constexpr int kTrimFailed = 3;
 constexpr int kRunFailed = 1;
+constexpr double kProgressIntervalS = 2.0;  // wall-clock seconds between progress reports
 
 struct Prepared {
-  std::unique_ptr<AircraftModel> model;
-  StartState start;
-  std::optional<io::InputProfile> profile;
+  FlightSetup setup;  // moved into the flight component once the trim is known good
+  std::unique_ptr<FlightComponent> flight;
+  std::unique_ptr<io::IoComponent> io;
 };
 
-Turbulence::Severity severity_named(const std::string& name) {
-  if (name == "light") return Turbulence::Severity::kLight;
-  if (name == "moderate") return Turbulence::Severity::kModerate;
-  if (name == "severe") return Turbulence::Severity::kSevere;
-  return Turbulence::Severity::kNone;
-}
-
-/// Reads and checks everything the run needs; throws for bad input.
-Prepared prepare(const FlyOptions& o) {
-  if (o.inputs_relative && o.inputs.empty()) {
-    throw std::invalid_argument("--inputs-relative needs --inputs");
-  }
+/// Reads and checks everything the run needs; throws for bad input (before anything is written).
+Prepared prepare(FlyOptions& o) {
+  check_fly_options(o);
   Prepared p;
-  p.model = std::make_unique<AircraftModel>(load_aircraft_pack(resolve_pack_path(o.aircraft)),
-                                            model_options(o));
-  if (!o.inputs.empty()) p.profile = io::InputProfile::load_file(o.inputs);
-  p.start = establish_start(o.start, *p.model);
-  if (!o.turbulence.empty()) {
-    WeatherSettings weather = p.model->weather();
-    weather.turbulence = severity_named(o.turbulence);
-    p.model->set_weather(weather);
+  if (!o.inputs.empty()) {
+    auto profile = std::make_unique<io::InputProfile>(io::InputProfile::load_file(o.inputs));
+    p.io = std::make_unique<io::IoComponent>("io", std::move(profile), o.flight.aircraft_id);
   }
+  p.setup = prepare_flight(o.flight);
   return p;
 }
 
 int fly(const FlyOptions& o, Prepared& p) {
-  CsvRecorder recorder(p.model->engine_count(), p.model->pack().landing_gear.contacts.size());
-  recorder.open(o.out);
-  BatchFlight flight(*p.model, p.start.controls, std::move(p.profile), o.inputs_relative);
-  BatchFlight::Progress progress;
-  if (!o.quiet) {
-    progress = [](double simulated_s, double total_s) {
-      std::fprintf(stderr, "fedsim-fly: %.1f of %.1f s simulated (%.0f %%)\n", simulated_s, total_s,
-                   100.0 * simulated_s / total_s);
-    };
-  }
+  const auto frames = static_cast<std::uint64_t>(std::llround(o.duration_s * o.rate_hz));
+  runtime::Composition composition({o.rate_hz, /*start_frozen=*/true});
+  if (p.io) composition.add(*p.io);
+  composition.add(*p.flight);
+  std::vector<std::string> topics = {runtime::topics::aircraft_state.name(),
+                                     runtime::topics::engine_state.name()};
+  if (p.io) topics.push_back(runtime::topics::pilot_controls.name());
+  tools::InProcessRecorder recorder(composition, topics, o.out_dir,
+                                    static_cast<std::uint64_t>(o.output_every));
   const auto start = std::chrono::steady_clock::now();
-  flight.run(o.duration_s, o.rate_hz, o.output_every, recorder, progress);
+  auto last_report = start;
+  composition.step_frame();  // frame 0, frozen: the start state
+  msg::SimCommand run;
+  run.kind(msg::COMMAND_RUN_STATE);
+  run.run_state(msg::RUN_STATE_RUN);
+  composition.command(run);
+  composition.run(frames, [&](const runtime::FrameContext& frame) {
+    recorder.drain();
+    if (o.quiet) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_report > std::chrono::duration<double>(kProgressIntervalS)) {
+      last_report = now;
+      const double simulated_s = frame.sim_time_s + frame.dt_s;
+      std::fprintf(stderr, "fedsim-fly: %.1f of %.1f s simulated (%.0f %%)\n", simulated_s,
+                   o.duration_s, 100.0 * simulated_s / std::max(o.duration_s, 1e-9));
+    }
+  });
+  composition.stop();
   recorder.close();
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet) {
     std::fprintf(stderr, "fedsim-fly: %.1f s flown in %.2f s (%.0fx real time) -> %s\n",
-                 o.duration_s, wall_s, o.duration_s / std::max(wall_s, 1e-9), o.out.c_str());
+                 o.duration_s, wall_s, o.duration_s / std::max(wall_s, 1e-9), o.out_dir.c_str());
   }
-  if (p.model->outputs().numerical_fault) {
-    std::fprintf(stderr, "fedsim-fly: warning: the model dropped a non-finite step\n");
+  if (composition.fault_count() > 0) {
+    for (const runtime::Component* c : {static_cast<runtime::Component*>(p.flight.get()),
+                                        static_cast<runtime::Component*>(p.io.get())}) {
+      if (!c) continue;
+      for (const auto& f : c->faults()) {
+        std::fprintf(stderr, "fedsim-fly: FAULT %s %s x%llu: %s\n", c->name().c_str(),
+                     f.kind.c_str(), static_cast<unsigned long long>(f.count), f.last.c_str());
+      }
+    }
+    return kRunFailed;
   }
   return 0;
 }
@@ -86,34 +99,37 @@ int fly(const FlyOptions& o, Prepared& p) {
 
 int main(int argc, char** argv) {
   FlyOptions options;
-  CLI::App app{"fedsim-fly: fly an aircraft pack in batch mode and write a CSV time history"};
+  CLI::App app{"fedsim-fly: fly an aircraft pack in batch mode and record every frame (CSV)"};
   add_fly_options(app, options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kBadInput;  // --help is not an error
+    return app.exit(e) == 0 ? 0 : runtime::kExitBadInput;  // --help is not an error
   }
 
   Prepared prepared;
   try {
     prepared = prepare(options);
+  } catch (const runtime::ProgramError& e) {
+    std::cerr << "fedsim-fly: " << e.what() << "\n";
+    return e.exit_code();
   } catch (const std::exception& e) {
     std::cerr << "fedsim-fly: " << e.what() << "\n";
-    return kBadInput;
+    return runtime::kExitBadInput;
   }
-  if (prepared.start.trim) {
-    std::cout << trim_json(*prepared.start.trim) << std::endl;
-    if (!prepared.start.trim->converged) {
-      std::cerr << "fedsim-fly: trim failed: " << prepared.start.trim->reason << "\n";
-      return kTrimFailed;
-    }
+  try {
+    if (prepared.setup.start.trim) std::cout << trim_json(*prepared.setup.start.trim) << std::endl;
+    require_trimmed(prepared.setup);
+    prepared.flight = std::make_unique<FlightComponent>("flight", std::move(prepared.setup),
+                                                        options.flight.state_qos);
+  } catch (const runtime::ProgramError& e) {
+    std::cerr << "fedsim-fly: " << e.what() << "\n";
+    return e.exit_code();
   }
   try {
     return fly(options, prepared);
   } catch (const std::exception& e) {
     std::cerr << "fedsim-fly: " << e.what() << "\n";
-    std::error_code ignored;
-    std::filesystem::remove(options.out, ignored);
     return kRunFailed;
   }
 }

@@ -1,5 +1,6 @@
-// Runs the built fedsim-fly: trim JSON and CSV, exit codes for bad input and failed trims (and
-// no CSV then), input profiles absolute and relative, IC files, and bit-identical repeats.
+// Runs the built fedsim-fly: trim JSON and the recorded topics (fedsim record's CSV files), exit
+// codes for bad input and failed trims (and no output then), input profiles absolute and
+// relative, IC files, and bit-identical repeats.
 #include <gtest/gtest.h>
 #include "common/units/units.hpp"
 
@@ -63,6 +64,14 @@ class FedsimFly : public ::testing::Test {
     return {};
   }
 
+  /// The recorded aircraft state and engine state of a run into `dir`.
+  static csv::NumericTable state(const std::string& dir) {
+    return csv::NumericTable::load(dir + "/fedsim_aircraft_state.csv");
+  }
+  static csv::NumericTable engine(const std::string& dir) {
+    return csv::NumericTable::load(dir + "/fedsim_engine_state.csv");
+  }
+
   std::vector<std::string> level_trim() const {
     return {"--aircraft", "c172",      "--trim", "level", "--alt-ft", "4000",  "--ktas",
             "100",        "--heading", "90",     "--lat", "28",       "--lon", "-90"};
@@ -78,7 +87,7 @@ class FedsimFly : public ::testing::Test {
 };
 
 TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
-  const std::string out = path("level.csv");
+  const std::string out = path("level");
   const FlyRun run = fly(join(level_trim(), {"--duration", "10", "--rate", "50", "--out", out}));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json trim = json_of(run.output);
@@ -95,46 +104,49 @@ TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
   }
   EXPECT_EQ(trim["residuals"].size(), 6u);
 
-  const csv::NumericTable csv = csv::NumericTable::load(out);
+  const csv::NumericTable csv = state(out);
   ASSERT_EQ(csv.rows(), 501u);  // t = 0 and 500 frames of 20 ms
-  EXPECT_DOUBLE_EQ(csv.column("time_s").front(), 0.0);
-  EXPECT_NEAR(csv.column("time_s")[1], 0.02, 1e-12);
-  EXPECT_NEAR(csv.column("time_s").back(), 10.0, 1e-9);
-  EXPECT_NEAR(csv.column("alt_m").front(), 1219.2, 1e-6);
-  EXPECT_NEAR(csv.column("lat_deg").front(), 28.0, 1e-9);
-  EXPECT_NEAR(csv.column("tas_kt").front(), 100.0, 1e-6);
-  EXPECT_NEAR(csv.column("psi_deg").front(), 90.0, 1e-9);
-  EXPECT_NEAR(csv.column("elevator_cmd").front(), trim["elevator"].get<double>(), 1e-9);
-  EXPECT_NEAR(csv.column("eng1_throttle_cmd").front(), trim["throttle"].get<double>(), 1e-9);
-  EXPECT_GT(csv.column("eng1_rpm").front(), 1500.0);     // settled at the trimmed throttle
-  EXPECT_NEAR(csv.column("alt_m").back(), 1219.2, 1.0);  // trimmed: holds its height
+  EXPECT_DOUBLE_EQ(csv.column("sim_time_s").front(), 0.0);
+  EXPECT_NEAR(csv.column("sim_time_s")[1], 0.02, 1e-12);
+  EXPECT_NEAR(csv.column("sim_time_s").back(), 10.0, 1e-9);
+  EXPECT_EQ(csv.column("stamp.frame").back(), 500.0);
+  EXPECT_NEAR(csv.column("altitude_msl_m").front(), 1219.2, 1e-6);
+  EXPECT_NEAR(csv.column("latitude_rad").front(), 28.0 * units::kDegToRad, 1e-12);
+  EXPECT_NEAR(csv.column("air.tas_mps").front(), 100.0 * kKt, 1e-6);
+  EXPECT_NEAR(csv.column("psi_rad").front(), units::kHalfPi, 1e-12);
+  EXPECT_NEAR(csv.column("controls.elevator").front(), trim["elevator"].get<double>(), 1e-9);
+  EXPECT_NEAR(csv.column("controls.throttle[0]").front(), trim["throttle"].get<double>(), 1e-9);
+  EXPECT_NEAR(csv.column("altitude_msl_m").back(), 1219.2, 1.0);  // trimmed: holds its height
+  const csv::NumericTable eng = engine(out);
+  ASSERT_EQ(eng.rows(), 501u);
+  EXPECT_GT(eng.column("rpm").front(), 1500.0);  // settled at the trimmed throttle
+  EXPECT_GT(eng.column("exhaust_temperature_k").front(), 800.0);
   for (const char* column :
-       {"ecef_x_m", "vn_mps", "u_mps", "p_dps", "q0", "alpha_deg", "cas_mps", "mach", "qbar_pa",
-        "thrust_n", "mass_kg", "gear_fz_n", "gear1_force_n", "eng1_n1_pct", "fz_eye_mps2"}) {
+       {"position_ecef_m[0]", "velocity_ned_mps[0]", "velocity_body_mps[0]", "omega_body_rps[0]",
+        "q_ned_to_body[0]", "air.alpha_rad", "air.cas_mps", "air.mach", "air.qbar_pa",
+        "total_thrust_n", "mass_kg", "gear_normal_force_n", "gear[0].normal_force_n",
+        "specific_force_eye_mps2[2]", "aero.lift", "force_body_n[2]", "moment_body_nm[1]",
+        "cg_pack_m[0]", "load_factor_z", "north_m", "dropped_steps"}) {
     EXPECT_TRUE(csv.has(column)) << column;
   }
+  EXPECT_FALSE(fs::exists(out + "/fedsim_pilot_controls.csv"));  // no --inputs, no I/O component
 }
 
-TEST_F(FedsimFly, EveryColumnNameCarriesItsUnit) {
-  const std::string out = path("units.csv");
+TEST_F(FedsimFly, RecordsTheColumnsFedsimRecordWrites) {
+  const std::string out = path("columns");
   ASSERT_EQ(fly(join(level_trim(), {"--duration", "0.1", "--rate", "10", "--out", out, "--quiet"}))
                 .exit_code,
             0);
-  // A unit suffix, or a quantity that has none (commands, normalised positions, flags,
-  // coefficients, the quaternion, Mach).
-  const std::regex with_unit(
-      ".*_(s|deg|m|mps|dps|dps2|mps2|pa|k|kgpm3|n|nm|kg|kgps|w|pct|g|kt|rpm)$");
-  const std::regex unitless(
-      "(q[0-3]|mach|cl|cd|cy|croll|cm|cn|stalled|wow|numerical_fault|.*_cmd|.*_norm|.*_running|"
-      "gear\\d+_wow)");
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  for (const std::string& name : csv.names()) {
-    EXPECT_TRUE(std::regex_match(name, with_unit) || std::regex_match(name, unitless)) << name;
-  }
+  // The recorder's layout (tools/topic/csv_layout.hpp): time first, then every IDL field
+  // flattened in declaration order, named after it (units in the names, SI).
+  const std::string header = util::read_file(out + "/fedsim_aircraft_state.csv").substr(0, 80);
+  EXPECT_EQ(header.rfind("sim_time_s,aircraft_id,stamp.frame,stamp.sim_time_s,latitude_rad,", 0), 0u)
+      << header;
+  EXPECT_EQ(state(out).rows(), 2u);
 }
 
 TEST_F(FedsimFly, ATrimOutOfReachExitsThreeWithTheReasonAndNoCsv) {
-  const std::string out = path("fast.csv");
+  const std::string out = path("fast");
   const FlyRun run = fly({"--aircraft", "c172", "--trim", "level", "--alt-ft", "4000", "--ktas",
                           "160", "--duration", "10", "--rate", "50", "--out", out});
   EXPECT_EQ(run.exit_code, 3) << run.output;
@@ -147,7 +159,7 @@ TEST_F(FedsimFly, ATrimOutOfReachExitsThreeWithTheReasonAndNoCsv) {
 }
 
 TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
-  const std::string out = path("bad.csv");
+  const std::string out = path("bad");
   const std::string bad_profile = write("bad_profile.csv", "time_s, elevator\n0, 0\n1, banana\n");
   const std::string unknown_channel = write("unknown.csv", "time_s, wheel\n0, 0\n");
   const std::string bad_ic = write("bad_ic.yaml",
@@ -182,6 +194,12 @@ TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
     EXPECT_NE(run.output.find(c.says), std::string::npos) << run.output;
     EXPECT_FALSE(fs::exists(out)) << c.says;
   }
+  // Not a number (CLI11's range check lets NaN through; fedsim-fly does not).
+  const FlyRun nan_duration = fly(join(level_trim(), {"--duration", "nan", "--rate", "50", "--out", out}));
+  EXPECT_EQ(nan_duration.exit_code, 2);
+  EXPECT_NE(nan_duration.output.find("--duration must be a finite number"), std::string::npos)
+      << nan_duration.output;
+  EXPECT_FALSE(fs::exists(out));
   // Required options.
   EXPECT_EQ(fly(join(level_trim(), {"--rate", "50", "--out", out})).exit_code, 2);
   EXPECT_FALSE(fs::exists(out));
@@ -197,42 +215,54 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
                                     "time_s, elevator\n"
                                     "0.0, 0.0\n1.0, 0.0\n1.0, -0.1\n2.0, -0.1\n2.0, 0.1\n3.0, 0.1\n"
                                     "3.0, 0.0\n");
-  const std::string out = path("doublet.csv.out");
+  const std::string out = path("doublet");
   const FlyRun run = fly(join(level_trim(), {"--inputs", profile, "--inputs-relative", "--duration",
                                              "20", "--rate", "100", "--out", out, "--quiet"}));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const double trimmed = json_of(run.output)["elevator"].get<double>();
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  const auto& t = csv.column("time_s");
-  const auto& elevator = csv.column("elevator_cmd");
-  const auto& q = csv.column("q_dps");
+  const csv::NumericTable csv = state(out);
+  const auto& t = csv.column("sim_time_s");
+  const auto& elevator = csv.column("controls.elevator");
+  const auto& q = csv.column("omega_body_rps[1]");
   double q_max = 0.0;
-  for (std::size_t i = 0; i < csv.rows(); ++i) {
-    const double expected = t[i] < 1.0 - 1e-9   ? 0.0
-                            : t[i] < 2.0 - 1e-9 ? -0.1
-                            : t[i] < 3.0 - 1e-9 ? 0.1
-                                                : 0.0;
-    ASSERT_NEAR(elevator[i], trimmed + expected, 1e-9) << "t = " << t[i];
+  constexpr double kDt = 0.01;
+  for (std::size_t i = 1; i < csv.rows(); ++i) {
+    // The row at t holds the controls flown from t - dt to t; as in the federation they were
+    // sampled by the I/O component one frame earlier, at t - 2 dt (the first at 0).
+    const double sampled = std::max(0.0, t[i] - 2.0 * kDt);
+    const double expected = sampled < 1.0 - 1e-9   ? 0.0
+                            : sampled < 2.0 - 1e-9 ? -0.1
+                            : sampled < 3.0 - 1e-9 ? 0.1
+                                                   : 0.0;
+    ASSERT_NEAR(elevator[i], trimmed + expected, 1e-6) << "t = " << t[i];
     q_max = std::max(q_max, q[i]);
   }
-  EXPECT_GT(q_max, 2.0);  // stick back: nose up (deg/s)
+  EXPECT_GT(q_max, 2.0 * units::kDegToRad);  // stick back: nose up
   // The throttle the profile does not drive stays at the trim.
-  EXPECT_NEAR(csv.column("eng1_throttle_cmd").back(), json_of(run.output)["throttle"].get<double>(),
-              1e-12);
+  EXPECT_NEAR(csv.column("controls.throttle[0]").back(),
+              json_of(run.output)["throttle"].get<double>(), 1e-6);
+  // The I/O component's own recording: the profile as sampled, frame by frame.
+  const csv::NumericTable pilot = csv::NumericTable::load(out + "/fedsim_pilot_controls.csv");
+  EXPECT_EQ(pilot.rows(), csv.rows());
 }
 
-TEST_F(FedsimFly, AnAbsoluteProfileReplacesTheChannelsItDrives) {
+TEST_F(FedsimFly, AnAbsoluteProfileSetsEveryChannel) {
+  // Absolute: the profile is the inceptors. Channels it does not name stay at the I/O
+  // defaults (stick neutral, mixture rich), as a federation's scripted I/O flies them.
   const std::string profile =
       write("idle.csv", "time_s, throttle, flaps\n0, 0.0, 0.0\n5, 0.0, 1.0\n");
-  const std::string out = path("idle.out");
+  const std::string out = path("idle");
   ASSERT_EQ(fly(join(level_trim(), {"--inputs", profile, "--duration", "6", "--rate", "50", "--out",
                                     out, "--quiet"}))
                 .exit_code,
             0);
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 0.0);
-  EXPECT_NEAR(csv.column("flaps_cmd")[125], 0.5, 1e-9);  // ramp: half way at 2.5 s
-  EXPECT_LT(csv.column("eng1_rpm").back(), csv.column("eng1_rpm").front() - 300.0);
+  const csv::NumericTable csv = state(out);
+  EXPECT_EQ(csv.column("controls.throttle[0]")[2], 0.0);
+  EXPECT_EQ(csv.column("controls.elevator")[2], 0.0);
+  // Ramp: half way at 2.5 s, sampled two frames before the row that flies it.
+  EXPECT_NEAR(csv.column("controls.flaps")[127], 0.5, 1e-6);
+  const csv::NumericTable eng = engine(out);
+  EXPECT_LT(eng.column("rpm").back(), eng.column("rpm").front() - 300.0);
   EXPECT_NEAR(csv.column("flap_norm").back(), 1.0, 1e-9);  // 4 s of transit for full flap
 }
 
@@ -245,24 +275,25 @@ TEST_F(FedsimFly, StartsFromAnInitialConditionFile) {
                                "controls: {throttle: 0.75, elevator: 0.1, flaps: 0.5}\n"
                                "weather:\n"
                                "  wind: [{alt_m: 0, speed_mps: 10, from_deg: 180}]\n");
-  const std::string out = path("ic.out");
+  const std::string out = path("ic");
   const FlyRun run = fly({"--aircraft", "c172", "--ic", ic, "--duration", "2", "--rate", "100",
                           "--integrator", "ab2", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.find('{'), std::string::npos);  // no trim, no JSON
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  EXPECT_NEAR(csv.column("lat_deg").front(), 45.0, 1e-9);
-  EXPECT_NEAR(csv.column("alt_m").front(), 6000.0 * units::kFtToM, 1e-6);
-  EXPECT_NEAR(csv.column("u_mps").front(), 50.0, 1e-9);
-  EXPECT_NEAR(csv.column("phi_deg").front(), 10.0, 1e-9);
+  const csv::NumericTable csv = state(out);
+  EXPECT_NEAR(csv.column("latitude_rad").front(), 45.0 * units::kDegToRad, 1e-12);
+  EXPECT_NEAR(csv.column("altitude_msl_m").front(), 6000.0 * units::kFtToM, 1e-6);
+  EXPECT_NEAR(csv.column("velocity_body_mps[0]").front(), 50.0, 1e-9);
+  EXPECT_NEAR(csv.column("phi_rad").front(), 10.0 * units::kDegToRad, 1e-12);
   // 10 m/s of headwind on 50 m/s southward; rolled, (v, w) keep their 2 m/s.
-  EXPECT_NEAR(csv.column("tas_mps").front(), std::hypot(60.0, 2.0), 1e-6);
-  EXPECT_NEAR(csv.column("eng1_throttle_cmd").front(), 0.75, 1e-12);
+  EXPECT_NEAR(csv.column("air.tas_mps").front(), std::hypot(60.0, 2.0), 1e-6);
+  EXPECT_NEAR(csv.column("controls.throttle[0]").front(), 0.75, 1e-12);
   EXPECT_NEAR(csv.column("flap_norm").front(), 0.5, 1e-12);  // surfaces start where they point
   // The engine starts settled at the file's throttle and airspeed, not spooling up from idle
   // (thousands of rpm per second): in the first 0.1 s its rpm hardly moves.
-  EXPECT_GT(csv.column("eng1_rpm").front(), 2000.0);
-  EXPECT_NEAR(csv.column("eng1_rpm")[10], csv.column("eng1_rpm").front(), 5.0);
+  const csv::NumericTable eng = engine(out);
+  EXPECT_GT(eng.column("rpm").front(), 2000.0);
+  EXPECT_NEAR(eng.column("rpm")[10], eng.column("rpm").front(), 5.0);
 }
 
 TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
@@ -272,70 +303,80 @@ TEST_F(FedsimFly, SameSeedSameBytesWithTurbulence) {
         fly(join(level_trim(), {"--turbulence", "moderate", "--seed", seed, "--integrator", "ab2",
                                 "--duration", "30", "--rate", "100", "--out", out, "--quiet"}));
     EXPECT_EQ(run.exit_code, 0) << run.output;
-    return util::read_file(out);
+    return util::read_file(out + "/fedsim_aircraft_state.csv");
   };
-  const std::string a = turbulent("a.csv", "5");
-  const std::string b = turbulent("b.csv", "5");
-  const std::string c = turbulent("c.csv", "6");
+  const std::string a = turbulent("a", "5");
+  const std::string b = turbulent("b", "5");
+  const std::string c = turbulent("c", "6");
   ASSERT_GT(a.size(), 100000u);
   EXPECT_TRUE(a == b) << "two runs with seed 5 differ";
   EXPECT_FALSE(a == c) << "seeds 5 and 6 gave the same turbulence";
   // And the turbulence is really there: the wind column moves.
-  const csv::NumericTable csv = csv::NumericTable::load(path("a.csv"));
-  const auto& wind = csv.column("wind_d_mps");
+  const csv::NumericTable csv = state(path("a"));
+  const auto& wind = csv.column("air.wind_ned_mps[2]");
   EXPECT_GT(
       *std::max_element(wind.begin(), wind.end()) - *std::min_element(wind.begin(), wind.end()),
       0.5);
 }
 
 TEST_F(FedsimFly, OutputEveryNthFrame) {
-  const std::string out = path("sparse.csv");
+  const std::string out = path("sparse");
   ASSERT_EQ(fly(join(level_trim(), {"--duration", "10", "--rate", "100", "--output-every", "25",
                                     "--out", out, "--quiet"}))
                 .exit_code,
             0);
-  const csv::NumericTable csv = csv::NumericTable::load(out);
+  const csv::NumericTable csv = state(out);
   EXPECT_EQ(csv.rows(), 41u);
-  EXPECT_NEAR(csv.column("time_s")[1], 0.25, 1e-12);
+  EXPECT_NEAR(csv.column("sim_time_s")[1], 0.25, 1e-12);
+  EXPECT_NEAR(csv.column("sim_time_s").back(), 10.0, 1e-9);
+  // An odd duration: the last frame is kept although it is not a multiple of 25.
+  ASSERT_EQ(fly(join(level_trim(), {"--duration", "10.03", "--rate", "100", "--output-every", "25",
+                                    "--out", out + "_odd", "--quiet"}))
+                .exit_code,
+            0);
+  const csv::NumericTable odd = state(out + "_odd");
+  EXPECT_EQ(odd.rows(), 42u);
+  EXPECT_NEAR(odd.column("sim_time_s").back(), 10.03, 1e-9);
 }
 
 TEST_F(FedsimFly, GroundTrimOnARaisedRunway) {
-  const std::string out = path("ground.csv");
+  const std::string out = path("ground");
   const FlyRun run =
       fly({"--aircraft", "b737", "--trim", "ground", "--runway-elevation-m", "430", "--heading",
            "120", "--duration", "5", "--rate", "50", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  EXPECT_EQ(csv.column("wow").back(), 1.0);
-  EXPECT_GT(csv.column("alt_m").back(), 430.0);
-  EXPECT_LT(csv.column("h_agl_m").back(), 3.0);
+  const csv::NumericTable csv = state(out);
+  EXPECT_EQ(csv.column("weight_on_wheels").back(), 1.0);
+  EXPECT_GT(csv.column("altitude_msl_m").back(), 430.0);
+  EXPECT_LT(csv.column("height_agl_m").back(), 3.0);
   EXPECT_LT(csv.column("ground_speed_mps").back(), 0.05);
-  EXPECT_EQ(csv.column("brake_left_cmd").back(), 1.0);
+  EXPECT_EQ(csv.column("controls.brake_left").back(), 1.0);
 }
 
 TEST_F(FedsimFly, GroundTrimWithTheEngineAtFullThrottleOnTheBrakes) {
   // A take-off start: parked, brakes set, the engine settled at full throttle.
-  const std::string out = path("runup.csv");
+  const std::string out = path("runup");
   const FlyRun run = fly({"--aircraft", "c172", "--trim", "ground", "--throttle", "1",
                           "--duration", "2", "--rate", "50", "--out", out, "--quiet"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(json_of(run.output)["converged"].get<bool>());
   EXPECT_EQ(json_of(run.output)["throttle"].get<double>(), 1.0);
-  const csv::NumericTable csv = csv::NumericTable::load(out);
-  EXPECT_EQ(csv.column("eng1_throttle_cmd").front(), 1.0);
-  EXPECT_EQ(csv.column("brake_left_cmd").front(), 1.0);
+  const csv::NumericTable csv = state(out);
+  EXPECT_EQ(csv.column("controls.throttle[0]").front(), 1.0);
+  EXPECT_EQ(csv.column("controls.brake_left").front(), 1.0);
   // Settled at the start: full-throttle static rpm (far above the 550 rpm idle) from row 0.
-  EXPECT_GT(csv.column("eng1_rpm").front(), 2000.0);
-  EXPECT_NEAR(csv.column("eng1_rpm").back(), csv.column("eng1_rpm").front(), 5.0);
-  EXPECT_GT(csv.column("eng1_thrust_n").front(), 1000.0);
+  const csv::NumericTable eng = engine(out);
+  EXPECT_GT(eng.column("rpm").front(), 2000.0);
+  EXPECT_NEAR(eng.column("rpm").back(), eng.column("rpm").front(), 5.0);
+  EXPECT_GT(eng.column("thrust_n").front(), 1000.0);
   // Held by the brakes: inside the gear's viscous friction band (0.25 m/s), where a braked
   // wheel under a steady push creeps instead of sliding (data/aircraft/README.md).
   EXPECT_LT(csv.column("ground_speed_mps").back(), 0.25);
 }
 
 TEST_F(FedsimFly, ClimbAndTurnTrims) {
-  const std::string out = path("x.csv");
+  const std::string out = path("x");
   FlyRun run =
       fly({"--aircraft", "b737", "--trim", "climb", "--alt-ft", "10000", "--kcas", "250",
            "--gamma-deg", "3", "--duration", "1", "--rate", "50", "--out", out, "--quiet"});
