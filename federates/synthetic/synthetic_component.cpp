@@ -17,6 +17,7 @@ void busy_wait_us(double us) {
 struct SyntheticOptions {
   double work_us = 0.0;
   bool publish = false;
+  std::string publish_qos;  // "" = the catalogue's
   bool input = false;
   std::string trace_file;
 };
@@ -26,14 +27,9 @@ class SyntheticComponent final : public runtime::Component {
   SyntheticComponent(std::string name, SyntheticOptions options)
       : Component(std::move(name)),
         // ---- Ports (optional) ----
-        navigation_state_(options.publish ? &writes(runtime::topics::navigation_state) : nullptr),
+        navigation_state_(options.publish ? &writes(runtime::topics::navigation_state, options.publish_qos) : nullptr),
         pilot_controls_(options.input ? &reads(runtime::topics::pilot_controls) : nullptr),
-        options_(std::move(options)) {
-    if (options_.trace_file.empty()) return;
-    trace_.open(options_.trace_file);
-    if (!trace_) throw std::runtime_error("cannot write " + options_.trace_file);
-    trace_ << "frame,sim_frame,sim_time_s,state,reset_count,input_frame,elevator\n";
-  }
+        options_(std::move(options)) {}
 
   void step(const runtime::FrameContext& ctx) override {
     if (options_.work_us > 0) busy_wait_us(options_.work_us);
@@ -41,7 +37,8 @@ class SyntheticComponent final : public runtime::Component {
       nav_.stamp(ctx.stamp());
       navigation_state_->write(nav_);
     }
-    if (!trace_.is_open()) return;
+    if (options_.trace_file.empty()) return;
+    if (!trace_.is_open()) open_trace();  // at the first frame: building the component writes nothing
     long long input_frame = -1;
     float elevator = 0.0f;
     if (const msg::PilotControls* controls = pilot_controls_ ? pilot_controls_->latest() : nullptr) {
@@ -56,6 +53,13 @@ class SyntheticComponent final : public runtime::Component {
   void on_stop() override { trace_.flush(); }
 
  private:
+  void open_trace() {
+    trace_.open(options_.trace_file);
+    if (!trace_) throw std::runtime_error("cannot write " + options_.trace_file);
+    trace_ << "frame,sim_frame,sim_time_s,state,reset_count,input_frame,elevator\n";
+  }
+
+
   runtime::Output<msg::NavigationState>* navigation_state_;
   runtime::Input<msg::PilotControls>* pilot_controls_;
   SyntheticOptions options_;
@@ -75,6 +79,8 @@ runtime::FederateProgram program() {
     app.add_option("--work-us", options->work_us, "busy work per frame [us]")
         ->check(CLI::Range(0.0, 1.0e6));
     app.add_flag("--publish", options->publish, "publish a navigation-state sample every frame");
+    app.add_option("--publish-qos", options->publish_qos,
+                   "QoS profile of the navigation-state writer (default: the catalogue's)");
     app.add_flag("--input", options->input, "take fedsim/pilot_controls as a lockstep input");
     app.add_option("--trace", options->trace_file,
                    "write one CSV line per frame: frame,sim_frame,sim_time_s,state,reset_count,"

@@ -1,7 +1,8 @@
 // fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
-// `fedsim command ...` sends instructor commands; `fedsim topic list|echo|hz` and
-// `fedsim record` monitor and record live topics.
+// `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
+// `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics.
 #include "fedsim/command_cli.hpp"
+#include "fedsim/graph.hpp"
 #include "fedsim/launcher.hpp"
 #include "topic/topic_commands.hpp"
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   run_cmd->callback([&] { exit_code = fedsim::launcher::run_deployment(run); });
 
   fedsim::launcher::add_command_commands(app, exit_code);
+  fedsim::launcher::add_graph_command(app, exit_code);
   fedsim::tools::add_topic_commands(app);
   CLI11_PARSE(app, argc, argv);
   return exit_code;

@@ -1,0 +1,102 @@
+// fedsim graph: the shipped deployments have a complete, matching data flow; a reader without a
+// writer and a QoS mismatch are reported by name (the checks can fail).
+#include "fedsim/graph.hpp"
+#include "fedsim/launcher.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace fedsim::launcher {
+namespace {
+
+namespace fs = std::filesystem;
+
+DataFlowGraph graph_of_text(const std::string& yaml) {
+  const Deployment d = parse_deployment(yaml, "test.yaml");
+  return build_graph(d, deployment_vars(std::string(FEDSIM_SOURCE_DIR) + "/deploy/test.yaml",
+                                        testing::TempDir() + "graph_out"));
+}
+
+bool mentions(const std::vector<std::string>& lines, const std::string& text) {
+  for (const auto& l : lines) {
+    if (l.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(Graph, ShippedDeploymentsHaveNoProblems) {
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(FEDSIM_SOURCE_DIR) + "/deploy")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Deployment d = load_deployment(entry.path().string());
+    const DataFlowGraph graph = build_graph(d, deployment_vars(entry.path().string(),
+                                                               testing::TempDir() + "graph_out"));
+    EXPECT_TRUE(graph.problems.empty()) << graph_text(graph);
+    EXPECT_FALSE(graph.nodes.empty());
+    ++checked;
+  }
+  EXPECT_GE(checked, 2);
+}
+
+TEST(Graph, DefaultScenarioWiresIoToFlightToRecorder) {
+  const std::string path = std::string(FEDSIM_SOURCE_DIR) + "/deploy/default.yaml";
+  const DataFlowGraph graph =
+      build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
+  const std::string dot = graph_dot(graph);
+  EXPECT_NE(dot.find("\"io\" -> \"flight\" [label=\"fedsim/pilot_controls\\nlockstep_data\"]"),
+            std::string::npos)
+      << dot;
+  EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> recorder"), std::string::npos);
+  // docs/architecture.md shows this graph: its DOT is the code's (redraw: target docs_images).
+  std::ifstream committed(std::string(FEDSIM_SOURCE_DIR) + "/docs/images/federation_default.dot");
+  const std::string committed_dot((std::istreambuf_iterator<char>(committed)),
+                                  std::istreambuf_iterator<char>());
+  EXPECT_EQ(committed_dot, dot) << "docs/images/federation_default.dot is out of date";
+}
+
+TEST(Graph, AReaderWithoutAWriterIsAProblem) {
+  const DataFlowGraph graph = graph_of_text(R"(name: orphan
+federates:
+  - name: flight
+    binary: fedsim-flight
+    args: [--aircraft, c172, --trim, level, --ktas, "100"]
+)");
+  ASSERT_EQ(graph.problems.size(), 1u) << graph_text(graph);
+  EXPECT_EQ(graph.problems[0], "flight reads fedsim/pilot_controls and no federate writes it");
+  EXPECT_NE(graph_dot(graph).find("color=red"), std::string::npos);
+}
+
+TEST(Graph, AReliableReaderOfABestEffortWriterIsAQosMismatch) {
+  const DataFlowGraph graph = graph_of_text(R"(name: mismatch
+federates:
+  - name: io
+    binary: fedsim-io
+    args: [--profile, "${DATA_DIR}/profiles/elevator_doublets.csv", --controls-qos, state]
+  - name: flight
+    binary: fedsim-flight
+    args: [--aircraft, c172, --trim, level, --ktas, "100"]
+)");
+  EXPECT_TRUE(mentions(graph.problems, "QoS mismatch on fedsim/pilot_controls: flight reads "
+                                       "reliable ('lockstep_data'), io writes best effort ('state')"))
+      << graph_text(graph);
+}
+
+TEST(Graph, TwoWritersOfATopicAndAnUnknownProfileAreProblems) {
+  const DataFlowGraph graph = graph_of_text(R"(name: two
+federates:
+  - {name: a, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/elevator_doublets.csv"]}
+  - {name: b, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/elevator_doublets.csv",
+                                       --controls-qos, no_such_profile]}
+)");
+  EXPECT_TRUE(mentions(graph.problems, "fedsim/pilot_controls has 2 writers (a, b)")) << graph_text(graph);
+  EXPECT_TRUE(mentions(graph.problems, "'no_such_profile', which the QoS file does not define"))
+      << graph_text(graph);
+}
+
+}  // namespace
+}  // namespace fedsim::launcher
