@@ -22,6 +22,7 @@
 #include "common/units/units.hpp"
 #include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
+#include "flight/model/scenario/trim.hpp"
 
 
 using namespace fedsim;

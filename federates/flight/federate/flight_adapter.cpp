@@ -24,14 +24,6 @@ std::string describe(const TrimResult& trim) {
   return out.str();
 }
 
-AircraftModel::Runway runway_of(const RunwayEnd& end) {
-  AircraftModel::Runway r;
-  r.threshold.lat_rad = end.threshold_lat_rad;
-  r.threshold.lon_rad = end.threshold_lon_rad;
-  r.threshold.alt_m = end.elevation_m;
-  r.heading_rad = end.heading_rad;
-  return r;
-}
 }  // namespace
 
 std::optional<std::string> check_pilot_controls(const msg::PilotControls& in) {
@@ -219,17 +211,17 @@ std::string apply_command(const msg::SimCommand& command, AircraftModel& model,
       if (r.kind() == msg::REPOSITION_POINT) {
         GeodeticPosition p{r.latitude_rad(), r.longitude_rad(), r.altitude_msl_m()};
         const double tas = r.airspeed_mps() > 0 ? r.airspeed_mps() : model.outputs().tas_mps;
-        return "reposition to point: " + describe(model.reposition_to_point(p, r.heading_rad(), tas));
+        return "reposition to point: " + describe(reposition_to_point(model, p, r.heading_rad(), tas));
       }
       const RunwayEnd end = runways.at(r.airport().to_string(), r.runway().to_string());
       if (r.kind() == msg::REPOSITION_RUNWAY_THRESHOLD) {
         return "reposition to " + end.airport + " " + end.runway + " threshold: " +
-               describe(model.reposition_to_runway(runway_of(end)));
+               describe(reposition_to_runway(model, runway_of(end)));
       }
       const double distance = r.gate_distance_m() > 0 ? r.gate_distance_m() : 9260.0;  // 5 NM
       const double tas = r.airspeed_mps() > 0 ? r.airspeed_mps() : model.outputs().tas_mps;
       return "reposition to " + end.airport + " " + end.runway + " approach gate: " +
-             describe(model.reposition_to_approach_gate(runway_of(end), distance, tas));
+             describe(reposition_to_approach_gate(model, runway_of(end), distance, tas));
     }
     case msg::COMMAND_WEATHER:
       model.set_weather(weather_from_command(command.weather(), model.runway_elevation_m()));

@@ -6,6 +6,7 @@
 #include "fedsim/msg/command.h"
 #include "fedsim/msg/controls.h"
 #include "flight/model/aircraft/aircraft_model.hpp"
+#include "flight/model/scenario/reposition.hpp"
 #include "common/airports/runway_table.hpp"
 
 #include <optional>

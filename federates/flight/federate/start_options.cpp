@@ -80,10 +80,10 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
   }
   if (!o.airport.empty() || !o.runway.empty()) {
     const RunwayEnd end = RunwayTable::load_default().at(o.airport, o.runway);
-    AircraftModel::Runway runway;
+    Runway runway;
     runway.threshold = {end.threshold_lat_rad, end.threshold_lon_rad, end.elevation_m};
     runway.heading_rad = end.heading_rad;
-    const TrimResult trim = model.reposition_to_runway(runway, throttle);
+    const TrimResult trim = reposition_to_runway(model, runway, throttle);
     start.trim = trim;
     start.initial = trim.initial_conditions;
     start.controls = trim.controls;

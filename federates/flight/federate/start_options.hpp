@@ -3,6 +3,7 @@
 #pragma once
 
 #include "flight/model/aircraft/aircraft_model.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -3,7 +3,6 @@
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "common/units/units.hpp"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -384,59 +383,6 @@ void AircraftModel::set_runway_elevation_m(double elevation_m) {
 void AircraftModel::set_integration_method(IntegrationMethod method) {
   integrator_.set_method(method);
   options_.integrator = method;
-}
-
-// ---- Repositioning ---------------------------------------------------------------------------
-
-TrimResult AircraftModel::reposition_to_point(const GeodeticPosition& position, double heading_rad,
-                                              double tas_mps) {
-  TrimRequest request;
-  request.kind = TrimKind::kLevel;
-  request.position = position;
-  request.heading_rad = heading_rad;
-  request.airspeed_mps = tas_mps;
-  request.controls = controls_;
-  return Trim(*this).solve(request);
-}
-
-TrimResult AircraftModel::reposition_to_runway(const Runway& runway, double throttle) {
-  if (!(throttle >= 0.0 && throttle <= 1.0)) {
-    throw std::invalid_argument("reposition to runway: throttle must be a number within 0..1 (got " +
-                                std::to_string(throttle) + ")");
-  }
-  set_runway_elevation_m(runway.threshold.alt_m);
-  TrimRequest request;
-  request.kind = TrimKind::kGround;
-  request.ground_throttle = throttle;
-  request.position = runway.threshold;
-  request.heading_rad = runway.heading_rad;
-  request.controls = controls_;
-  request.controls.gear_down = true;
-  return Trim(*this).solve(request);
-}
-
-TrimResult AircraftModel::reposition_to_approach_gate(const Runway& runway, double distance_m,
-                                                      double tas_mps, double glide_path_rad) {
-  // The gate lies distance_m back along the centreline (geodesic, WGS-84), on the glide path
-  // through the 50 ft threshold crossing height (ICAO Annex 14 / PANS-OPS reference datum).
-  constexpr double kThresholdCrossingHeightM = 50.0 * units::kFtToM;
-  double lat_deg = 0.0, lon_deg = 0.0;
-  const double back_azimuth_deg = runway.heading_rad * units::kRadToDeg + 180.0;
-  GeographicLib::Geodesic::WGS84().Direct(runway.threshold.lat_rad * units::kRadToDeg,
-                                          runway.threshold.lon_rad * units::kRadToDeg, back_azimuth_deg,
-                                          distance_m, lat_deg, lon_deg);
-  set_runway_elevation_m(runway.threshold.alt_m);
-  TrimRequest request;
-  request.kind = TrimKind::kClimb;
-  request.position.lat_rad = lat_deg / units::kRadToDeg;
-  request.position.lon_rad = lon_deg / units::kRadToDeg;
-  request.position.alt_m =
-      runway.threshold.alt_m + kThresholdCrossingHeightM + distance_m * std::tan(glide_path_rad);
-  request.heading_rad = runway.heading_rad;
-  request.airspeed_mps = tas_mps;
-  request.flight_path_rad = -glide_path_rad;
-  request.controls = controls_;
-  return Trim(*this).solve(request);
 }
 
 // ---- State placement -------------------------------------------------------------------------

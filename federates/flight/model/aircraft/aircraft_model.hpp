@@ -16,7 +16,6 @@
 #include "flight/model/aircraft/aircraft_outputs.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
 #include "flight/model/aircraft/initial_conditions.hpp"
-#include "flight/model/aircraft/trim.hpp"
 #include "flight/model/aircraft/weather_settings.hpp"
 #include "flight/model/dynamics/rigid_body_dynamics.hpp"
 #include "common/atmosphere/atmosphere.hpp"
@@ -86,13 +85,6 @@ class AircraftModel {
     void validate() const;
   };
 
-  /// A runway end: threshold position on the centreline (lat, lon in rad; alt_m = the
-  /// runway's elevation) and the true heading of the runway direction.
-  struct Runway {
-    GeodeticPosition threshold;
-    double heading_rad = 0.0;
-  };
-
   /// Builds every sub-model from the pack (throws std::invalid_argument if the pack has more
   /// than kMaxEngines engines or the options are bad). Until reset() the aircraft hangs at
   /// rest at 0 N 0 E, 1000 m, engines running at idle.
@@ -118,26 +110,6 @@ class AircraftModel {
   /// The commands for the next step (clamped, NaN-safe; see AircraftControls).
   void set_controls(const AircraftControls& controls);
   const AircraftControls& controls() const { return controls_; }
-
-  // ---- Repositioning (instructor) -----------------------------------------------------------
-  // Each keeps fuel, weather and failures, re-pins the flat-earth origin at the new position,
-  // trims there and leaves the model in the trimmed state with the trimmed controls (check
-  // the result: if the trim fails the model is in the best state found).
-
-  /// In flight at a point: wings level, straight and level at the true airspeed.
-  TrimResult reposition_to_point(const GeodeticPosition& position, double heading_rad,
-                                 double tas_mps);
-  /// On the runway centreline at the threshold, aligned, at rest, brakes set, the engines
-  /// running at `throttle` (0 idle .. 1 full, e.g. 1 for a take-off from a run-up held on the
-  /// brakes); the runway elevation becomes the threshold's. Throws std::invalid_argument for a
-  /// throttle that is not a number within 0..1.
-  TrimResult reposition_to_runway(const Runway& runway, double throttle = 0.0);
-  /// On the extended centreline distance_m before the threshold, on a glide path of
-  /// glide_path_rad (3 deg) through 50 ft over the threshold, established in a steady descent
-  /// at the true airspeed with the current flaps and gear.
-  TrimResult reposition_to_approach_gate(const Runway& runway, double distance_m, double tas_mps,
-                                         double glide_path_rad = 3.0 * units::kPi /
-                                                                 180.0);
 
   // ---- Environment and failures -------------------------------------------------------------
 

@@ -5,7 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -330,7 +331,7 @@ TEST(GroundTrimThrottle, HoldsAFullThrottleRunUpOnTheBrakes) {
   for (double bad : {-0.01, 1.01, std::nan(""), double{INFINITY}}) {
     r.ground_throttle = bad;
     EXPECT_THROW(Trim(*model).solve(r), std::invalid_argument) << bad;
-    EXPECT_THROW(model->reposition_to_runway({{0.7, -1.2, 0.0}, 0.0}, bad),
+    EXPECT_THROW(reposition_to_runway(*model, {{0.7, -1.2, 0.0}, 0.0}, bad),
                  std::invalid_argument)
         << bad;
   }

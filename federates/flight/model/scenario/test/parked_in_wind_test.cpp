@@ -10,7 +10,8 @@
 #include <string>
 #include <tuple>
 
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 using namespace testing;
 
 // San Francisco 28R: the threshold (about 4 m above MSL) and its 298 deg true heading.
-const AircraftModel::Runway kRunway28R{{37.6139 * kDeg, -122.3581 * kDeg, 4.0}, 298.0 * kDeg};
+const Runway kRunway28R{{37.6139 * kDeg, -122.3581 * kDeg, 4.0}, 298.0 * kDeg};
 constexpr double kRateHz = 50.0;
 
 WeatherSettings steady_wind(double speed_mps, double from_rad) {
@@ -35,7 +36,7 @@ std::unique_ptr<AircraftModel> parked(const std::string& pack, IntegrationMethod
   AircraftModel::Options options;
   options.integrator = method;
   auto model = make_model(pack, options);
-  const TrimResult trim = model->reposition_to_runway(kRunway28R);
+  const TrimResult trim = reposition_to_runway(*model, kRunway28R);
   EXPECT_TRUE(trim.converged) << trim.reason;
   controls = trim.controls;
   EXPECT_EQ(controls.brake_left, 1.0);

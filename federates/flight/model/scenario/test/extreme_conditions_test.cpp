@@ -6,7 +6,7 @@
 #include <string>
 #include <tuple>
 
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
 
 namespace fedsim::flight {
 namespace {

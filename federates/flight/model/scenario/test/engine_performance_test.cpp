@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "flight/model/aircraft/pack_to_systems.hpp"
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
 
 namespace fedsim::flight {
 namespace {
@@ -68,7 +69,7 @@ double balance_rpm(double airspeed_mps, double rho) {
 
 constexpr double kSeaLevelDensity = 1.225;  // ISA
 
-const AircraftModel::Runway kRunway{{34.0 * kDeg, -118.0 * kDeg, 0.0}, 69.0 * kDeg};
+const Runway kRunway{{34.0 * kDeg, -118.0 * kDeg, 0.0}, 69.0 * kDeg};
 
 TEST(EnginePerformance, StaticFullThrottleRpmAndPowerFollowTheSourceData) {
   // Independent expectation: rated engine = propeller at J = 0, sea level ISA:
@@ -127,7 +128,7 @@ TEST(EnginePerformance, TakeOffGroundRollFollowsTheSourceEngineAndPropeller) {
   // friction) the model meets on the way.
   auto model = make_model("c172.yaml");
   ASSERT_NEAR(model->outputs().mass_kg, 2400.0 * kLb, 1.0);
-  const TrimResult parked = model->reposition_to_runway(kRunway, 1.0);
+  const TrimResult parked = reposition_to_runway(*model, kRunway, 1.0);
   ASSERT_TRUE(parked.converged) << parked.reason;
   ASSERT_GT(model->outputs().engines[0].rpm, 2000.0);  // full power on the brakes
   AircraftControls c = parked.controls;
@@ -214,8 +215,8 @@ namespace {
 TEST(EnginePerformance, RunningEnginesReportTheirExhaustTemperatureStoppedOnesAmbient) {
   for (const char* pack : {"c172.yaml", "b737.yaml"}) {
     auto model = testing::make_model(pack);
-    const AircraftModel::Runway runway{{34.0 * testing::kDeg, -118.0 * testing::kDeg, 0.0}, 0.0};
-    ASSERT_TRUE(model->reposition_to_runway(runway).converged) << pack;  // idle, running
+    const Runway runway{{34.0 * testing::kDeg, -118.0 * testing::kDeg, 0.0}, 0.0};
+    ASSERT_TRUE(reposition_to_runway(*model, runway).converged) << pack;  // idle, running
     const double ambient_k = model->outputs().temperature_k;
     for (const EngineOutputs& e : model->outputs().engines) {
       EXPECT_TRUE(e.has_egt) << pack;

@@ -1,5 +1,5 @@
 // Trim by Levenberg-Marquardt on all equations together with a numerical Jacobian.
-#include "flight/model/aircraft/trim.hpp"
+#include "flight/model/scenario/trim.hpp"
 #include "common/units/units.hpp"
 
 #include <Eigen/Cholesky>

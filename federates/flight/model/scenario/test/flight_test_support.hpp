@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "flight/model/aircraft/aircraft_model.hpp"
+#include "flight/model/scenario/reposition.hpp"
+#include "flight/model/scenario/trim.hpp"
 
 namespace fedsim::flight::testing {
 

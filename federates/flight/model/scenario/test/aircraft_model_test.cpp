@@ -4,7 +4,8 @@
 
 #include <cmath>
 
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
 #include "common/atmosphere/airspeed.hpp"
 
 namespace fedsim::flight {
@@ -261,7 +262,7 @@ TEST(AircraftModel, TheRunwayPlaneCanBeMoved) {
 TEST(AircraftModel, RepositionToAPointTrimsStraightAndLevel) {
   auto model = make_model("c172.yaml");
   const GeodeticPosition where{51.0 * kDeg, -1.0 * kDeg, 2000.0};
-  const TrimResult t = model->reposition_to_point(where, 200.0 * kDeg, 95.0 * kKt);
+  const TrimResult t = reposition_to_point(*model, where, 200.0 * kDeg, 95.0 * kKt);
   ASSERT_TRUE(t.converged) << t.reason;
   EXPECT_NEAR(model->outputs().geodetic.lat_rad, where.lat_rad, 1e-12);
   EXPECT_NEAR(model->outputs().tas_mps, 95.0 * kKt, 1e-9);
@@ -270,8 +271,8 @@ TEST(AircraftModel, RepositionToAPointTrimsStraightAndLevel) {
 
 TEST(AircraftModel, RepositionToTheRunwayIsAtRestOnTheCentreline) {
   auto model = make_model("b737.yaml");
-  const AircraftModel::Runway runway{{37.6 * kDeg, -122.4 * kDeg, 4.0}, 280.0 * kDeg};
-  const TrimResult t = model->reposition_to_runway(runway);
+  const Runway runway{{37.6 * kDeg, -122.4 * kDeg, 4.0}, 280.0 * kDeg};
+  const TrimResult t = reposition_to_runway(*model, runway);
   ASSERT_TRUE(t.converged) << t.reason;
   const AircraftOutputs& o = model->outputs();
   EXPECT_EQ(model->runway_elevation_m(), 4.0);
@@ -287,9 +288,9 @@ TEST(AircraftModel, RepositionToTheApproachGateIsOnTheGlidePath) {
   AircraftControls c = model->controls();
   c.flaps = 1.0 / 3.0;
   model->set_controls(c);
-  const AircraftModel::Runway runway{{47.0 * kDeg, 8.0 * kDeg, 400.0}, 90.0 * kDeg};
+  const Runway runway{{47.0 * kDeg, 8.0 * kDeg, 400.0}, 90.0 * kDeg};
   const double gate_m = 3.0 * 1852.0;
-  const TrimResult t = model->reposition_to_approach_gate(runway, gate_m, 70.0 * kKt);
+  const TrimResult t = reposition_to_approach_gate(*model, runway, gate_m, 70.0 * kKt);
   ASSERT_TRUE(t.converged) << t.reason;
   const AircraftOutputs& o = model->outputs();
   // 50 ft over the threshold plus 3 nm at 3 deg: 1023 ft above the runway, 3 nm west of it.

@@ -5,14 +5,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 namespace fedsim::flight {
 namespace {
 
 using namespace testing;
 
-const AircraftModel::Runway kRunway{{34.0 * kDeg, -118.0 * kDeg, 10.0}, 69.0 * kDeg};
+const Runway kRunway{{34.0 * kDeg, -118.0 * kDeg, 10.0}, 69.0 * kDeg};
 
 double distance_from_start(const AircraftOutputs& o) { return std::hypot(o.north_m, o.east_m); }
 
@@ -22,7 +23,7 @@ TEST(TakeOff, C172LiftsOffAtItsHandbookSpeed) {
   // with the short-field technique (flaps 10 deg). Band: lift-off at 50 to 65 KCAS after
   // 200 to 500 m (flaps up, rotation only at 55 KCAS, no steering).
   auto model = make_model("c172.yaml");
-  const TrimResult parked = model->reposition_to_runway(kRunway);
+  const TrimResult parked = reposition_to_runway(*model, kRunway);
   ASSERT_TRUE(parked.converged) << parked.reason;
   AircraftControls c = parked.controls;
   c.set_throttle(1.0);
@@ -63,7 +64,7 @@ struct Roll {
 /// `max_s` has passed.
 Roll landing_roll(const std::string& pack, double speed_mps, double brake, double max_s) {
   auto model = make_model(pack);
-  const TrimResult parked = model->reposition_to_runway(kRunway);
+  const TrimResult parked = reposition_to_runway(*model, kRunway);
   EXPECT_TRUE(parked.converged) << parked.reason;
   AircraftInitialConditions ic = parked.initial_conditions;
   ic.velocity_mps = speed_mps * Eigen::Vector3d(std::cos(kRunway.heading_rad),

@@ -7,7 +7,8 @@
 #include <new>
 
 #include "common/util/allocation_counter.hpp"
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 
 namespace fedsim::flight {
@@ -45,7 +46,7 @@ TEST(AircraftModelNoAllocation, StepsSetControlsAndOutputsDoNotAllocate) {
         weather.microburst.max_outflow_mps = 15.0;
         weather.microburst.centre_east_m = 500.0;
         model->set_weather(weather);
-        const TrimResult trim = model->reposition_to_runway({{0.5, 0.5, 0.0}, 0.0});
+        const TrimResult trim = reposition_to_runway(*model, {{0.5, 0.5, 0.0}, 0.0});
         ASSERT_TRUE(trim.converged) << trim.reason;
         AircraftControls c = trim.controls;
         c.brake_left = c.brake_right = 0.0;
