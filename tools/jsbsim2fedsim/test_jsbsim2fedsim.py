@@ -400,6 +400,14 @@ class PropellerAndCalibrationTest(unittest.TestCase):
                           "engines.engine.piston", "unknown field")
         self.expect_error(base + "engines:\n  x: 1\n", 14, "engines", "duplicate key")
 
+    def test_shipped_c172_overlay_reads(self):
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data",
+                            "aircraft", "c172.calibration.yaml")
+        overlay = calibration.read_overlay(path, "c172.yaml")
+        keys = sorted(s["key"] for s in overlay["settings"])
+        self.assertEqual(keys, ["power_coefficient_factor", "thrust_coefficient_factor"])
+        self.assertTrue(all("Pilot's Operating Handbook" in s["source"] for s in overlay["settings"]))
+
 
 if __name__ == "__main__":
     unittest.main()
