@@ -3,15 +3,17 @@
 
 Usage:
   jsbsim2fedsim.py AIRCRAFT.xml --output PACK.yaml [--engine-dir DIR] [--jsbsim-root DIR]
-                   [--commit SHA] [--name NAME]
+                   [--commit SHA] [--name NAME] [--calibration OVERLAY.yaml]
 
 Reads the aircraft file and the engine, propeller and thruster files it names (from
 --engine-dir, by default <jsbsim-root>/engine), converts every figure to SI in fedsim's pack
 frame (body axes x forward, y right, z down, metres from the JSBSim structural origin; JSBSim's
 structural frame is x aft, y right, z up, usually inches) and translates the aerodynamic
 functions into fedsim coefficient terms. Whatever it cannot translate is listed on stderr and in
-the pack's metadata.notes. Python 3 standard library only. The pack format is documented in
-data/aircraft/README.md.
+the pack's metadata.notes. --calibration merges a calibration overlay (figures identified
+from the aircraft's published performance, e.g. data/aircraft/c172.calibration.yaml; see
+calibration.py), so that they survive regenerating the pack. Python 3 standard library only.
+The pack format is documented in data/aircraft/README.md.
 """
 
 import argparse
@@ -21,6 +23,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import calibration  # noqa: E402
 import jsbsim_aero  # noqa: E402
 import jsbsim_fcs  # noqa: E402
 import jsbsim_xml as jx  # noqa: E402
@@ -312,7 +315,7 @@ class Converter:
 
     def _propeller(self, p, thruster):
         self._note_unknown(p, {"ixx", "diameter", "numblades", "minpitch", "maxpitch", "gearratio",
-                               "table"}, "propeller")
+                               "ct_factor", "cp_factor", "table"}, "propeller")
         tables = {t.get("name"): t for t in p.findall("table")}
         out = {"diameter_m": commented(jx.value_si(p, "diameter", "FT"), p.find("diameter"), "FT"),
                "blade_count": int(jx.plain_number(p, "numblades")),
@@ -323,13 +326,17 @@ class Converter:
                "spin_sense": int(jx.plain_number(thruster, "sense", 1.0)),
                "p_factor_m_per_rad": Commented(jx.plain_number(thruster, "p_factor", 0.0) * jx.IN,
                                                "%g in/rad" % jx.plain_number(thruster, "p_factor", 0.0))}
-        for key, name, column in (("thrust_coefficient", "C_THRUST", "blade_pitch_deg"),
-                                  ("power_coefficient", "C_POWER", "blade_pitch_deg"),
-                                  ("thrust_tip_mach_factor", "CT_MACH", None),
-                                  ("power_tip_mach_factor", "CP_MACH", None)):
+        for key, name in (("thrust_coefficient", "C_THRUST"), ("power_coefficient", "C_POWER")):
             if name in tables:
-                row = "tip_mach" if column is None else "advance_ratio"
-                out[key] = internal_table(tables[name], row, column)
+                out[key] = internal_table(tables[name], "advance_ratio", "blade_pitch_deg")
+        # JSBSim FGPropeller multiplies C_THRUST by <ct_factor> and C_POWER by <cp_factor>.
+        for key, element in (("thrust_coefficient_factor", "ct_factor"),
+                             ("power_coefficient_factor", "cp_factor")):
+            if p.find(element) is not None:
+                out[key] = Commented(jx.plain_number(p, element), "JSBSim <%s>" % element)
+        for key, name in (("thrust_tip_mach_factor", "CT_MACH"), ("power_tip_mach_factor", "CP_MACH")):
+            if name in tables:
+                out[key] = internal_table(tables[name], "tip_mach", None)
         for name in tables:
             if name not in ("C_THRUST", "C_POWER", "CT_MACH", "CP_MACH"):
                 self.notes.append("propeller table %s is not translated" % name)
@@ -527,7 +534,16 @@ def main(argv=None):
     parser.add_argument("--engine-dir", help="folder of engine and propeller files")
     parser.add_argument("--commit", default="", help="JSBSim commit the files come from")
     parser.add_argument("--name", help="pack name (default: the aircraft file's name attribute)")
+    parser.add_argument("--calibration", help="calibration overlay to merge (e.g. "
+                        "data/aircraft/c172.calibration.yaml; its 'pack' must name the output)")
     args = parser.parse_args(argv)
+    overlay = None
+    if args.calibration:
+        try:
+            overlay = calibration.read_overlay(args.calibration, os.path.basename(args.output))
+        except (OSError, calibration.CalibrationError) as e:
+            print("jsbsim2fedsim: %s" % e, file=sys.stderr)
+            return 1
 
     root_dir = args.jsbsim_root or os.path.join(os.path.dirname(args.aircraft), "..", "..")
     engine_dir = args.engine_dir or os.path.join(root_dir, "engine")
@@ -544,12 +560,19 @@ def main(argv=None):
     sections["landing_gear"] = conv.landing_gear()
     sections["limits"] = conv.limits()
     checks = conv.control_sign_report()
+    if overlay is not None:
+        try:
+            calibration.apply(overlay, sections, notes, Commented)
+        except calibration.CalibrationError as e:
+            print("jsbsim2fedsim: %s" % e, file=sys.stderr)
+            return 1
     notes[:] = list(dict.fromkeys(notes))  # one line per distinct finding
 
     files = ", ".join(relative(f, args.jsbsim_root) for f in conv.files_read)
     commit = ("JSBSim-Team/jsbsim commit %s: " % args.commit) if args.commit else "JSBSim: "
+    calibrated = ("; calibrated by " + os.path.basename(args.calibration)) if overlay else ""
     metadata = {"name": args.name or conv.root.get("name"),
-                "source": commit + files + "; converted by tools/jsbsim2fedsim"}
+                "source": commit + files + "; converted by tools/jsbsim2fedsim" + calibrated}
     description = conv.root.findtext("fileheader/description")
     if description:
         metadata["description"] = " ".join(description.split())
@@ -561,6 +584,10 @@ def main(argv=None):
               "(figures only; see metadata.source). Regenerate rather than edit; the format is",
               "documented in data/aircraft/README.md. Comments give the JSBSim figure each SI",
               "value came from (JSBSim structural frame: x aft, y right, z up)."]
+    if overlay is not None:
+        header += ["Values marked 'calibrated' come from %s (merged with --calibration):" %
+                   os.path.basename(args.calibration),
+                   "identified from published performance; edit that file, not this one."]
     with open(args.output, "w") as out:
         out.write(document(header, sections))
     for line in checks:

@@ -12,6 +12,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import calibration  # noqa: E402
 import jsbsim2fedsim  # noqa: E402
 import jsbsim_aero  # noqa: E402
 import jsbsim_xml as jx  # noqa: E402
@@ -229,6 +230,183 @@ class ConverterTest(unittest.TestCase):
         self.assertEqual(jx.interpolate([[0.0, 1.0]], [2.0, 4.0], [0.25]), 2.5)
         term = {"value": 2.0, "multiply_by": ["alpha_rad"]}
         self.assertEqual(jsbsim_aero.evaluate_term(term, {"alpha_rad": 0.5}), 1.0)
+
+
+# A single piston engine with a fixed-pitch propeller that states JSBSim's <cp_factor> (and no
+# <ct_factor>), for the propulsion translation and the calibration overlay.
+PISTON_AIRCRAFT = AIRCRAFT.replace("""  <propulsion>
+""", """  <propulsion>
+    <engine file="testengine"> <feed> 0 </feed>
+      <thruster file="testprop">
+        <location unit="IN"> <x> -30 </x> <y> 0 </y> <z> 20 </z> </location>
+        <orient unit="DEG"> <roll> 0 </roll> <pitch> 0 </pitch> <yaw> 0 </yaw> </orient>
+        <sense> 1 </sense>
+      </thruster>
+    </engine>
+""")
+ENGINE = """<?xml version="1.0"?>
+<piston_engine name="test">
+  <minmp unit="INHG"> 10 </minmp> <maxmp unit="INHG"> 28 </maxmp>
+  <displacement unit="IN3"> 300 </displacement> <maxhp> 150 </maxhp> <bsfc> 0.45 </bsfc>
+  <cycles> 4 </cycles> <idlerpm> 600 </idlerpm> <maxrpm> 2700 </maxrpm>
+</piston_engine>
+"""
+PROPELLER = """<?xml version="1.0"?>
+<propeller name="test">
+  <ixx> 1.5 </ixx> <diameter unit="IN"> 72 </diameter> <numblades> 2 </numblades>
+  <minpitch> 20 </minpitch> <maxpitch> 20 </maxpitch>
+  <cp_factor> 1.25 </cp_factor>
+  <table name="C_THRUST" type="internal"> <tableData>
+    0.0 0.07
+    1.0 0.02 </tableData> </table>
+  <table name="C_POWER" type="internal"> <tableData>
+    0.0 0.06
+    1.0 0.03 </tableData> </table>
+</propeller>
+"""
+OVERLAY = """# a comment line
+fedsim_pack_calibration: 1
+pack: testplane.yaml
+procedure: "made up for the test"   # trailing comment
+engines:
+  engine:
+    propeller:
+      thrust_coefficient_factor:
+        value: 1.05
+        source: "POH: ground roll 900 ft"
+      power_coefficient_factor:
+        value: 0.9   # replaces the JSBSim factor
+        source: plain text is fine too
+"""
+
+
+class PropellerAndCalibrationTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        d = self.dir.name
+        for name, text in (("testplane.xml", PISTON_AIRCRAFT), ("testengine.xml", ENGINE),
+                           ("testprop.xml", PROPELLER), ("testplane.calibration.yaml", OVERLAY)):
+            with open(os.path.join(d, name), "w") as f:
+                f.write(text)
+        self.aircraft = os.path.join(d, "testplane.xml")
+        self.overlay = os.path.join(d, "testplane.calibration.yaml")
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def write_overlay(self, text):
+        with open(self.overlay, "w") as f:
+            f.write(text)
+
+    def expect_error(self, text, line, field, words):
+        self.write_overlay(text)
+        with self.assertRaises(calibration.CalibrationError) as caught:
+            overlay = calibration.read_overlay(self.overlay, "testplane.yaml")
+            sections, notes = self.sections()
+            calibration.apply(overlay, sections, notes, jsbsim2fedsim.Commented)
+        message = str(caught.exception)
+        self.assertTrue(message.startswith("%s:%d: %s" % (self.overlay, line, field)), message)
+        self.assertIn(words, message)
+
+    def sections(self):
+        notes = []
+        conv = jsbsim2fedsim.Converter(self.aircraft, self.dir.name, notes)
+        return {"propulsion": conv.propulsion()}, notes
+
+    def test_jsbsim_cp_factor_is_translated(self):
+        sections, notes = self.sections()
+        prop = plain(sections["propulsion"]["engines"][0]["propeller"])
+        self.assertEqual(prop["power_coefficient_factor"], 1.25)
+        self.assertNotIn("thrust_coefficient_factor", prop)  # JSBSim's default 1
+        self.assertFalse(any("cp_factor" in n for n in notes))  # translated, not dropped
+        self.assertEqual(list(prop).index("power_coefficient_factor"),
+                         list(prop).index("power_coefficient") + 1)
+
+    def test_overlay_values_replace_and_follow_the_tables_with_their_sources_noted(self):
+        overlay = calibration.read_overlay(self.overlay, "testplane.yaml")
+        self.assertEqual(overlay["procedure"], "made up for the test")
+        sections, notes = self.sections()
+        calibration.apply(overlay, sections, notes, jsbsim2fedsim.Commented)
+        raw = sections["propulsion"]["engines"][0]["propeller"]
+        self.assertEqual(raw["thrust_coefficient_factor"].comment,
+                         "calibrated: testplane.calibration.yaml")
+        prop = plain(raw)
+        self.assertEqual(prop["thrust_coefficient_factor"], 1.05)
+        self.assertEqual(prop["power_coefficient_factor"], 0.9)
+        keys = list(prop)
+        self.assertEqual(keys[keys.index("power_coefficient") + 1:keys.index("power_coefficient") + 3],
+                         ["power_coefficient_factor", "thrust_coefficient_factor"])
+        self.assertTrue(any("thrust_coefficient_factor = 1.05" in n and "ground roll 900 ft" in n
+                            for n in notes))
+        self.assertTrue(any("power_coefficient_factor = 0.9" in n and "replaces JSBSim's "
+                            "<cp_factor> 1.25" in n for n in notes))
+        self.assertTrue(any("made up for the test" in n for n in notes))
+
+    def test_converter_merges_the_overlay_into_the_written_pack(self):
+        out = os.path.join(self.dir.name, "testplane.yaml")
+        status = jsbsim2fedsim.main([self.aircraft, "--engine-dir", self.dir.name, "-o", out,
+                                     "--calibration", self.overlay])
+        self.assertEqual(status, 0)
+        with open(out) as f:
+            text = f.read()
+        self.assertIn("thrust_coefficient_factor: 1.05  # calibrated: testplane.calibration.yaml",
+                      text)
+        self.assertIn("calibrated by testplane.calibration.yaml", text)
+        # Without the overlay the pack keeps JSBSim's factor only.
+        self.assertEqual(jsbsim2fedsim.main([self.aircraft, "--engine-dir", self.dir.name, "-o",
+                                             out]), 0)
+        with open(out) as f:
+            text = f.read()
+        self.assertIn("power_coefficient_factor: 1.25  # JSBSim <cp_factor>", text)
+        self.assertNotIn("thrust_coefficient_factor", text)
+
+    def test_overlay_for_another_pack_is_refused(self):
+        out = os.path.join(self.dir.name, "other.yaml")
+        status = jsbsim2fedsim.main([self.aircraft, "--engine-dir", self.dir.name, "-o", out,
+                                     "--calibration", self.overlay])
+        self.assertEqual(status, 1)
+        self.assertFalse(os.path.exists(out))
+
+    def test_bad_overlays_fail_at_their_file_line_and_field(self):
+        base = OVERLAY
+        self.expect_error(base.replace("value: 1.05", "value: 0.0"), 9,
+                          "engines.engine.propeller.thrust_coefficient_factor.value",
+                          "outside the allowed range [0.1, 10]")
+        self.expect_error(base.replace("value: 1.05", "value: -2"), 9,
+                          "engines.engine.propeller.thrust_coefficient_factor.value",
+                          "outside the allowed range")
+        self.expect_error(base.replace("value: 1.05", "value: .nan"), 9,
+                          "engines.engine.propeller.thrust_coefficient_factor.value",
+                          "expected a finite number")
+        self.expect_error(base.replace("value: 1.05", "value: 11"), 9,
+                          "engines.engine.propeller.thrust_coefficient_factor.value",
+                          "outside the allowed range")
+        self.expect_error(base.replace("      thrust_coefficient_factor:", "      thrust_factor:"),
+                          8, "engines.engine.propeller.thrust_factor", "unknown field")
+        self.expect_error(base.replace("        source: \"POH: ground roll 900 ft\"\n", ""), 8,
+                          "engines.engine.propeller.thrust_coefficient_factor.source", "missing")
+        self.expect_error(base.replace("  engine:", "  engine 2:"), 9,
+                          "engines.engine 2.propeller.thrust_coefficient_factor",
+                          "no engine named 'engine 2'")
+        self.expect_error(base.replace("pack: testplane.yaml", "pack: c172.yaml"), 3, "pack",
+                          "belongs to c172.yaml")
+        self.expect_error(base.replace("fedsim_pack_calibration: 1", "fedsim_pack_calibration: 2"),
+                          2, "fedsim_pack_calibration", "unsupported format version")
+        self.expect_error(base.replace("value: 1.05", "value: [1.05]"), 9,
+                          "engines.engine.propeller.thrust_coefficient_factor.value",
+                          "only plain scalars")
+        self.expect_error(base + "  - engine\n", 14, "", "lists are not allowed")
+        self.expect_error(base.replace("    propeller:", "    piston:"), 7,
+                          "engines.engine.piston", "unknown field")
+        self.expect_error(base + "engines:\n  x: 1\n", 14, "engines", "duplicate key")
+
+    def test_shipped_c172_overlay_reads(self):
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data",
+                            "aircraft", "c172.calibration.yaml")
+        overlay = calibration.read_overlay(path, "c172.yaml")
+        keys = sorted(s["key"] for s in overlay["settings"])
+        self.assertEqual(keys, ["power_coefficient_factor", "thrust_coefficient_factor"])
+        self.assertTrue(all("Pilot's Operating Handbook" in s["source"] for s in overlay["settings"]))
 
 
 if __name__ == "__main__":

@@ -40,6 +40,10 @@ struct PropellerSpec {
   Table2D thrust_coefficient_pitch; // CT(J, pitch_rad)
   Table1D power_coefficient;        // CP(J)
   Table2D power_coefficient_pitch;  // CP(J, pitch_rad)
+  // Constant multipliers on the CT and CP tables (JSBSim's <ct_factor>, <cp_factor>): a generic
+  // table matched to one aircraft's published performance (data/aircraft/README.md).
+  double thrust_coefficient_factor = 1.0;
+  double power_coefficient_factor = 1.0;
   Table1D thrust_tip_mach_factor;   // CT multiplier against helical tip Mach (may be empty)
   Table1D power_tip_mach_factor;    // CP multiplier against helical tip Mach (may be empty)
 };

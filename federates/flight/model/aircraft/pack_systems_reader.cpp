@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "flight/model/aircraft/pack_reading.hpp"
+#include "flight/model/systems/propeller.hpp"
 
 namespace fedsim::flight::pack_detail {
 
@@ -109,7 +110,8 @@ void read_propeller_coefficient(const ConfigNode& node, const std::string& key, 
 PropellerSpec read_propeller(const ConfigNode& node) {
   node.reject_unknown_keys({"diameter_m", "blade_count", "inertia_kgm2", "gear_ratio",
                             "min_pitch_deg", "max_pitch_deg", "spin_sense", "p_factor_m_per_rad",
-                            "thrust_coefficient", "power_coefficient", "thrust_tip_mach_factor",
+                            "thrust_coefficient", "power_coefficient", "thrust_coefficient_factor",
+                            "power_coefficient_factor", "thrust_tip_mach_factor",
                             "power_tip_mach_factor"});
   PropellerSpec p;
   p.diameter_m = node.number("diameter_m", 0.1, 10.0);
@@ -126,6 +128,12 @@ PropellerSpec read_propeller(const ConfigNode& node) {
                              p.thrust_coefficient_pitch);
   read_propeller_coefficient(node, "power_coefficient", p.power_coefficient,
                              p.power_coefficient_pitch);
+  p.thrust_coefficient_factor =
+      node.number_or("thrust_coefficient_factor", 1.0, Propeller::kMinCoefficientFactor,
+                     Propeller::kMaxCoefficientFactor);
+  p.power_coefficient_factor =
+      node.number_or("power_coefficient_factor", 1.0, Propeller::kMinCoefficientFactor,
+                     Propeller::kMaxCoefficientFactor);
   if (node.has("thrust_tip_mach_factor")) {
     p.thrust_tip_mach_factor = read_table_1d(node, "thrust_tip_mach_factor", "tip_mach");
   }

@@ -78,6 +78,8 @@ PistonPowerplant::Params piston_powerplant_params(const EngineSpec& engine) {
       coefficient_table(pr.thrust_coefficient, pr.thrust_coefficient_pitch, pr.min_pitch_rad);
   p.propeller.power_coefficient =
       coefficient_table(pr.power_coefficient, pr.power_coefficient_pitch, pr.min_pitch_rad);
+  p.propeller.thrust_coefficient_factor = pr.thrust_coefficient_factor;
+  p.propeller.power_coefficient_factor = pr.power_coefficient_factor;
   p.propeller.thrust_tip_mach_factor = pr.thrust_tip_mach_factor;
   p.propeller.power_tip_mach_factor = pr.power_tip_mach_factor;
 

@@ -31,6 +31,10 @@ void Propeller::Params::validate() const {
   param_checks::positive(diameter_m, "diameter_m");
   check_coefficient_table(thrust_coefficient, "thrust_coefficient");
   check_coefficient_table(power_coefficient, "power_coefficient");
+  param_checks::in_range(thrust_coefficient_factor, kMinCoefficientFactor, kMaxCoefficientFactor,
+                         "thrust_coefficient_factor");
+  param_checks::in_range(power_coefficient_factor, kMinCoefficientFactor, kMaxCoefficientFactor,
+                         "power_coefficient_factor");
 }
 
 Propeller::Propeller(Params params) : params_(std::move(params)) { params_.validate(); }
@@ -68,8 +72,10 @@ Propeller::Outputs Propeller::evaluate(const Inputs& in) const {
   out.advance_ratio = rps > 0.0 ? std::min(v / (rps * d), kLargestReportedAdvanceRatio)
                                 : (v > 0.0 ? kLargestReportedAdvanceRatio : 0.0);
   out.tip_mach = std::hypot(v, tip_speed) / std::max(in.speed_of_sound_mps, 1.0);
-  const double ct_factor = factor_or_one(params_.thrust_tip_mach_factor, out.tip_mach);
-  const double cp_factor = factor_or_one(params_.power_tip_mach_factor, out.tip_mach);
+  const double ct_factor = params_.thrust_coefficient_factor *
+                           factor_or_one(params_.thrust_tip_mach_factor, out.tip_mach);
+  const double cp_factor = params_.power_coefficient_factor *
+                           factor_or_one(params_.power_tip_mach_factor, out.tip_mach);
 
   out.thrust_coefficient = thrust_coefficient(out.advance_ratio, in.blade_angle_rad) * ct_factor;
   out.power_coefficient = power_coefficient(out.advance_ratio, in.blade_angle_rad) * cp_factor;

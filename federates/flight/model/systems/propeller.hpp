@@ -18,7 +18,9 @@ namespace fedsim::flight {
 ///
 /// Model (n in rev/s, D diameter):
 ///   T = CT(J, beta) rho n^2 D^4,   Q = CP(J, beta) rho n^2 D^5 / (2 pi),
-/// with CT and CP scaled by the optional helical-tip-Mach factors. The tables stop at a
+/// with CT and CP scaled by the constant factors (JSBSim's <ct_factor>, <cp_factor>: they match
+/// a generic table to one aircraft's published performance) and by the optional
+/// helical-tip-Mach factors. The tables stop at a
 /// largest advance ratio J_end; beyond it (which includes a stopped propeller, J -> infinity)
 /// the blades see mostly the free stream, forces scale with V^2, i.e. CT and CP grow as J^2:
 ///   T = CT(J_end) / J_end^2 rho V^2 D^2,   Q = CP(J_end) / J_end^2 rho V^2 D^3 / (2 pi),
@@ -26,6 +28,12 @@ namespace fedsim::flight {
 /// Negative airspeed is treated as zero (the tables start at J = 0).
 class Propeller {
  public:
+  /// The range accepted for the constant CT and CP factors: wide enough for a per-blade table
+  /// scaled by the blade count (JSBSim's Aeromatic writes ct_factor = number of blades), narrow
+  /// enough to refuse a typo or a unit slip.
+  static constexpr double kMinCoefficientFactor = 0.1;
+  static constexpr double kMaxCoefficientFactor = 10.0;
+
   struct Params {
     double diameter_m = 0.0;
     /// Thrust coefficient CT: rows = advance ratio J (from 0, increasing), columns = blade
@@ -33,6 +41,11 @@ class Propeller {
     Table2D thrust_coefficient;
     /// Power coefficient CP, same layout.
     Table2D power_coefficient;
+    /// Constant multipliers on the CT and CP tables (JSBSim FGPropeller's CtFactor, CpFactor,
+    /// which multiply the table values in Calculate() and GetPowerRequired()). Within
+    /// [kMinCoefficientFactor, kMaxCoefficientFactor].
+    double thrust_coefficient_factor = 1.0;
+    double power_coefficient_factor = 1.0;
     /// Optional factors on CT and CP as functions of helical tip Mach number; empty = 1.
     Table1D thrust_tip_mach_factor;
     Table1D power_tip_mach_factor;
@@ -63,7 +76,7 @@ class Propeller {
 
   Outputs evaluate(const Inputs& in) const;
 
-  /// CT(J, beta) straight from the table (no tip-Mach factor, J clamped to the table).
+  /// CT(J, beta) straight from the table (no factor, J clamped to the table).
   double thrust_coefficient(double advance_ratio, double blade_angle_rad) const;
   double power_coefficient(double advance_ratio, double blade_angle_rad) const;
   const Params& params() const { return params_; }

@@ -58,6 +58,13 @@ TEST(PackToSystems, C172PowerplantAndGearBuild) {
   EXPECT_EQ(prop.rotation_sense, -1);
   EXPECT_NO_THROW(PistonPowerplant{prop});
   EXPECT_THROW(turbofan_params(p.engines[0]), std::invalid_argument);
+  // The propeller's constant CT and CP factors reach the model unchanged.
+  AircraftPack factored = p;
+  factored.engines[0].propeller.thrust_coefficient_factor = 1.1;
+  factored.engines[0].propeller.power_coefficient_factor = 0.9;
+  const PistonPowerplant::Params with_factors = piston_powerplant_params(factored.engines[0]);
+  EXPECT_EQ(with_factors.propeller.thrust_coefficient_factor, 1.1);
+  EXPECT_EQ(with_factors.propeller.power_coefficient_factor, 0.9);
 
   const LandingGear::Params gear = landing_gear_params(p.landing_gear);
   ASSERT_EQ(gear.contacts.size(), 6u);

@@ -161,6 +161,56 @@ TEST(Propeller, HelicalTipMachReducesThrustAndRaisesPower) {
               cp_factor * 0.066 * 1.225 * n * n * std::pow(d, 5) / (2.0 * std::numbers::pi), 1e-6);
 }
 
+TEST(Propeller, ConstantFactorsMultiplyTheTablesAsJsbsimsCtAndCpFactors) {
+  // JSBSim FGPropeller: ThrustCoeff = C_THRUST(J) * CtFactor, cPReq = C_POWER(J) * CpFactor,
+  // ahead of the tip-Mach tables. prop_75in2f at J = 0.5: CT 0.066, CP 0.053; below tip Mach
+  // 0.85, where the Mach factors are 1.
+  Propeller::Params params = reference::prop_75in2f();
+  params.thrust_coefficient_factor = 1.2;
+  params.power_coefficient_factor = 0.8;
+  const Propeller prop(params);
+  const double d = params.diameter_m;
+  Propeller::Inputs in;
+  in.blade_angle_rad = 22.0 * reference::kDeg;
+  in.rpm = 2000.0;
+  const double n = in.rpm / 60.0;
+  in.axial_airspeed_mps = 0.5 * n * d;
+  const Propeller::Outputs out = prop.evaluate(in);
+  ASSERT_LT(out.tip_mach, 0.85);
+  EXPECT_NEAR(out.thrust_coefficient, 1.2 * 0.066, 1e-12);
+  EXPECT_NEAR(out.power_coefficient, 0.8 * 0.053, 1e-12);
+  EXPECT_NEAR(out.thrust_n, 1.2 * 0.066 * 1.225 * n * n * std::pow(d, 4), 1e-6);
+  EXPECT_NEAR(out.power_w, 0.8 * 0.053 * 1.225 * n * n * n * std::pow(d, 5), 1e-5);
+  // Efficiency J CT / CP scales with the ratio of the factors.
+  EXPECT_NEAR(out.efficiency, 0.5 * 0.066 / 0.053 * 1.2 / 0.8, 1e-9);
+  // A stopped propeller in a wind (beyond the table's last J) is scaled the same way:
+  // prop_75in2f ends at J = 5 with CT -0.073, CP 0.0493.
+  in.rpm = 0.0;
+  in.axial_airspeed_mps = 30.0;
+  const Propeller::Outputs stopped = prop.evaluate(in);
+  EXPECT_NEAR(stopped.thrust_n, 1.2 * -0.073 / 25.0 * 1.225 * 30.0 * 30.0 * d * d, 1e-6);
+  EXPECT_NEAR(stopped.torque_nm,
+              0.8 * 0.0493 / 25.0 * 1.225 * 30.0 * 30.0 * std::pow(d, 3) /
+                  (2.0 * std::numbers::pi),
+              1e-6);
+}
+
+TEST(Propeller, ConstantFactorsOutsideTheirRangeAreRefusedByName) {
+  for (const double bad : {0.0, -1.0, 0.05, 11.0, std::nan(""), HUGE_VAL}) {
+    for (const std::string field : {"thrust_coefficient_factor", "power_coefficient_factor"}) {
+      Propeller::Params p = reference::prop_75in2f();
+      (field == "thrust_coefficient_factor" ? p.thrust_coefficient_factor
+                                            : p.power_coefficient_factor) = bad;
+      try {
+        p.validate();
+        ADD_FAILURE() << field << " = " << bad << " accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 TEST(Propeller, NegativeOrNanInputsGiveNoNan) {
   const Propeller prop(reference::prop_75in2f());
   Propeller::Inputs in;
