@@ -1,6 +1,6 @@
 // The aircraft executive: sub-models evaluated in one fixed order, forces and moments moved to
 // the CG, the rigid body integrated.
-#include "flight/model/aircraft/aircraft_model.hpp"
+#include "flight/model/aircraft/aircraft_model_parts.hpp"
 #include "common/units/units.hpp"
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "flight/model/aircraft/executive_order.hpp"
 #include "flight/model/aircraft/pack_to_systems.hpp"
 #include "common/atmosphere/airspeed.hpp"
 #include "common/atmosphere/altimetry.hpp"
@@ -51,10 +52,6 @@ MassProperties mass_properties_of(const MassBalance::Outputs& mass) {
 bool any_retractable(const LandingGearSpec& gear) {
   return std::any_of(gear.contacts.begin(), gear.contacts.end(),
                      [](const GearContactSpec& c) { return c.retractable; });
-}
-
-double position_of(const std::optional<Actuator>& actuator) {
-  return actuator ? actuator->outputs().position_rad : 0.0;
 }
 
 void step_actuator(std::optional<Actuator>& actuator, double dt_s, double command) {
@@ -103,57 +100,6 @@ void alpha_beta_rates(const Eigen::Vector3d& v, const Eigen::Vector3d& v_dot, do
 }
 }  // namespace
 
-// ---- Sub-model holders -----------------------------------------------------------------------
-
-struct AircraftModel::Engine {
-  EngineType type = EngineType::piston_propeller;
-  std::optional<PistonPowerplant> piston;
-  std::optional<Turbofan> turbofan;
-  double idle_rpm = 0.0;
-  bool running = true;  // ignition and fuel selected on
-  bool failed = false;  // instructor failure
-};
-
-struct AircraftModel::Surfaces {
-  std::optional<Actuator> elevator, aileron, rudder, flaps, speedbrake, spoilers;
-  std::optional<Actuator> gear;  // 0 up .. 1 down, at the pack's transit rate
-  bool retractable_gear = false;
-  double flap_position_at_full = 1.0;  // actuator position at flap command 1 (rad or 1)
-  double flap_full_travel_rad = 0.0;
-};
-
-/// Everything one evaluation of the force chain works out, in executive order.
-struct AircraftModel::Evaluation {
-  // Kinematics of the state.
-  GeodeticPosition geodetic;
-  Eigen::Matrix3d ref_from_body = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d ned_from_body = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d omega_wrt_earth_b = Eigen::Vector3d::Zero();
-  double height_agl_m = 0.0;
-  double north_m = 0.0, east_m = 0.0;
-  // 1 atmosphere.
-  AirProperties air;
-  // 2 weather.
-  Eigen::Vector3d steady_wind_ned_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();
-  // 4 air data.
-  Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
-  double tas_mps = 0.0, alpha_rad = 0.0, beta_rad = 0.0, mach = 0.0, qbar_pa = 0.0;
-  // 5-7 forces (body axes) and moments about the CG.
-  Aerodynamics::Outputs aero;
-  Eigen::Vector3d aero_force_b = Eigen::Vector3d::Zero(), aero_moment_cg = Eigen::Vector3d::Zero();
-  Eigen::Vector3d prop_force_b = Eigen::Vector3d::Zero(), prop_moment_cg = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gear_force_b = Eigen::Vector3d::Zero(), gear_moment_cg = Eigen::Vector3d::Zero();
-  Wrench wrench;
-  // Accelerations (current evaluation only).
-  RigidBodyAccelerations accelerations;
-  Eigen::Vector3d velocity_b_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d velocity_b_dot_mps2 = Eigen::Vector3d::Zero();
-};
-
 // ---- Construction ----------------------------------------------------------------------------
 
 void AircraftModel::Options::validate() const {
@@ -198,16 +144,16 @@ void AircraftModel::build_systems() {
   const FlightControlsSpec& fc = pack_.flight_controls;
   surfaces_ = std::make_unique<Surfaces>();
   Surfaces& s = *surfaces_;
-  if (fc.elevator) s.elevator.emplace(actuator_params(*fc.elevator));
-  if (fc.aileron) s.aileron.emplace(actuator_params(*fc.aileron));
-  if (fc.rudder) s.rudder.emplace(actuator_params(*fc.rudder));
+  if (fc.elevator) s[Surface::kElevator].emplace(actuator_params(*fc.elevator));
+  if (fc.aileron) s[Surface::kAileron].emplace(actuator_params(*fc.aileron));
+  if (fc.rudder) s[Surface::kRudder].emplace(actuator_params(*fc.rudder));
   if (fc.flaps) {
-    s.flaps.emplace(kinematic_actuator_params(*fc.flaps));
-    s.flap_position_at_full = s.flaps->params().deflection_at_plus_one_rad;
+    s[Surface::kFlaps].emplace(kinematic_actuator_params(*fc.flaps));
+    s.flap_position_at_full = s[Surface::kFlaps]->params().deflection_at_plus_one_rad;
     s.flap_full_travel_rad = fc.flaps->full_travel_rad;
   }
-  if (fc.speedbrake) s.speedbrake.emplace(kinematic_actuator_params(*fc.speedbrake));
-  if (fc.spoilers) s.spoilers.emplace(kinematic_actuator_params(*fc.spoilers));
+  if (fc.speedbrake) s[Surface::kSpeedbrake].emplace(kinematic_actuator_params(*fc.speedbrake));
+  if (fc.spoilers) s[Surface::kSpoilers].emplace(kinematic_actuator_params(*fc.spoilers));
   s.retractable_gear = any_retractable(pack_.landing_gear);
   if (s.retractable_gear) {
     Actuator::Params gear;
@@ -216,7 +162,7 @@ void AircraftModel::build_systems() {
     gear.position_min_rad = 0.0;
     gear.position_max_rad = 1.0;
     gear.rate_limit_radps = 1.0 / pack_.landing_gear.transit_time_s;
-    s.gear.emplace(gear);
+    s[Surface::kGear].emplace(gear);
   }
 
   engines_.clear();
@@ -420,13 +366,9 @@ void AircraftModel::set_state(const AircraftInitialConditions& state) {
 
 void AircraftModel::place_surfaces() {
   Surfaces& s = *surfaces_;
-  place_actuator(s.elevator, controls_.elevator_command());
-  place_actuator(s.aileron, controls_.aileron_command());
-  place_actuator(s.rudder, controls_.rudder_command());
-  place_actuator(s.flaps, controls_.flaps);
-  place_actuator(s.speedbrake, controls_.speedbrake);
-  place_actuator(s.spoilers, controls_.spoilers);
-  place_actuator(s.gear, controls_.gear_down ? 1.0 : 0.0);
+  for (Surface surface : Surfaces::kAll) {
+    place_actuator(s[surface], Surfaces::command(surface, controls_));
+  }
 }
 
 void AircraftModel::settle_systems() {
@@ -492,16 +434,48 @@ Turbofan::Inputs AircraftModel::turbofan_inputs(std::size_t i) const {
 // ---- The executive order ---------------------------------------------------------------------
 
 void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool update_hysteresis) {
+  evaluate_kinematics(state, e);
+  for (Stage stage : kExecutiveOrder) {
+    switch (stage) {
+      case Stage::kAtmosphere:
+        e.air = atmosphere_.at(e.geodetic.alt_m);
+        break;
+      case Stage::kWeather:
+        evaluate_weather(e);
+        break;
+      case Stage::kFlightControls:
+        break;  // the actuators' positions, advanced once per step, are read where they act
+      case Stage::kAirData:
+        evaluate_air_data(e);
+        break;
+      case Stage::kPropulsion:
+        evaluate_propulsion(e);
+        break;
+      case Stage::kAerodynamics:
+        evaluate_aerodynamics(state, e, update_hysteresis);
+        break;
+      case Stage::kGroundReactions:
+        evaluate_ground_reactions(e);
+        break;
+      case Stage::kMassBalance:
+        break;  // mass, CG and inertia as the last fuel burn left them (the CG is used above)
+      case Stage::kEquationsOfMotion:
+        // The wrench the equations of motion integrate.
+        e.wrench.force_b_n = e.aero_force_b + e.prop_force_b + e.gear_force_b;
+        e.wrench.moment_b_nm = e.aero_moment_cg + e.prop_moment_cg + e.gear_moment_cg;
+        break;
+    }
+  }
+}
+
+void AircraftModel::evaluate_kinematics(const RigidBodyState& state, Evaluation& e) const {
   const EarthModel& earth = dynamics_.earth();
-  const MassBalance::Outputs& mass = mass_->outputs();
-  const Eigen::Vector3d& cg = mass.cg_m;
 
   // Kinematics of the state in local terms.
   e.ref_from_body = dcm_from_quaternion(state.attitude);
   e.geodetic = earth.geodetic(state.position_m);
   const Eigen::Matrix3d ned_from_ref = earth.ned_from_reference(e.geodetic);
   e.ned_from_body = ned_from_ref * e.ref_from_body;
-  const Eigen::Matrix3d body_from_ned = e.ned_from_body.transpose();
   e.velocity_ned_mps = ned_from_ref * state.velocity_mps;
   e.omega_wrt_earth_b = state.omega_b_rps - e.ref_from_body.transpose() * earth.frame_rate_rps();
   e.height_agl_m = e.geodetic.alt_m - runway_elevation_m_;
@@ -513,9 +487,9 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
     e.east_m = wrap_pi(e.geodetic.lon_rad - origin_.lon_rad) * origin_parallel_radius_m_;
   }
 
-  // 1. Atmosphere at the CG altitude.
-  e.air = atmosphere_.at(e.geodetic.alt_m);
+}
 
+void AircraftModel::evaluate_weather(Evaluation& e) const {
   // 2. Weather: steady wind, microburst, turbulence (the gusts of the present step are held).
   e.steady_wind_ned_mps = wind_.at(e.geodetic.alt_m).wind_ned_mps;
   e.wind_ned_mps = e.steady_wind_ned_mps;
@@ -531,11 +505,10 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   }
   e.wind_ned_mps += e.gust_ned_mps;
 
-  // 3. Flight controls: the actuators' positions (advanced once per step).
-  const Surfaces& s = *surfaces_;
-  const double flap_norm = position_of(s.flaps) / s.flap_position_at_full;
-  const double gear_norm = s.retractable_gear ? position_of(s.gear) : 1.0;
+}
 
+void AircraftModel::evaluate_air_data(Evaluation& e) const {
+  const Eigen::Matrix3d body_from_ned = e.ned_from_body.transpose();
   // 4. Air data.
   e.air_velocity_b_mps = body_from_ned * (e.velocity_ned_mps - e.wind_ned_mps);
   const Eigen::Vector3d& va = e.air_velocity_b_mps;
@@ -545,6 +518,10 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   e.mach = mach_number(e.tas_mps, e.air);
   e.qbar_pa = dynamic_pressure_pa(e.tas_mps, e.air);
 
+}
+
+void AircraftModel::evaluate_propulsion(Evaluation& e) const {
+  const Eigen::Vector3d& cg = mass_->outputs().cg_m;
   // 5. Propulsion: each engine's force and moment about the datum (held over the step).
   e.prop_force_b.setZero();
   Eigen::Vector3d prop_moment_datum = Eigen::Vector3d::Zero();
@@ -565,6 +542,14 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   }
   e.prop_moment_cg = prop_moment_datum - cg.cross(e.prop_force_b);
 
+}
+
+void AircraftModel::evaluate_aerodynamics(const RigidBodyState& state, Evaluation& e,
+                                          bool update_hysteresis) {
+  const Eigen::Vector3d& cg = mass_->outputs().cg_m;
+  const Surfaces& s = *surfaces_;
+  const double flap_norm = s.position(Surface::kFlaps) / s.flap_position_at_full;
+  const double gear_norm = s.retractable_gear ? s.position(Surface::kGear) : 1.0;
   // 6. Aerodynamics about the aero reference point, moved to the CG. Rates relative to the air
   // mass: the earth-relative body rates minus the turbulence gust rates (Etkin).
   const Eigen::Vector3d& omega_for_aero =
@@ -579,13 +564,13 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   aero_in.omega_air_b = omega_for_aero - e.gust_rates_b_rps;
   aero_in.alphadot_radps = alpha_dot_radps_;
   aero_in.betadot_radps = beta_dot_radps_;
-  aero_in.elevator_rad = position_of(s.elevator);
-  aero_in.aileron_rad = position_of(s.aileron);
-  aero_in.rudder_rad = position_of(s.rudder);
+  aero_in.elevator_rad = s.position(Surface::kElevator);
+  aero_in.aileron_rad = s.position(Surface::kAileron);
+  aero_in.rudder_rad = s.position(Surface::kRudder);
   aero_in.flap_norm = flap_norm;
   aero_in.gear_norm = gear_norm;
-  aero_in.speedbrake_norm = position_of(s.speedbrake);
-  aero_in.spoiler_norm = position_of(s.spoilers);
+  aero_in.speedbrake_norm = s.position(Surface::kSpeedbrake);
+  aero_in.spoiler_norm = s.position(Surface::kSpoilers);
   aero_in.aero_rp_height_agl_m = e.height_agl_m - (e.ned_from_body * arp_from_cg).z();
   e.aero = update_hysteresis
                ? aerodynamics_.evaluate(aero_in)
@@ -593,6 +578,12 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   e.aero_force_b = e.aero.force_b;
   e.aero_moment_cg = e.aero.moment_b + arp_from_cg.cross(e.aero.force_b);
 
+}
+
+void AircraftModel::evaluate_ground_reactions(Evaluation& e) {
+  const Eigen::Vector3d& cg = mass_->outputs().cg_m;
+  const Eigen::Matrix3d body_from_ned = e.ned_from_body.transpose();
+  const Surfaces& s = *surfaces_;
   // 7. Ground reactions on the runway plane.
   LandingGear::contact_kinematics(gear_->params(), Eigen::Vector3d(0.0, 0.0, -e.geodetic.alt_m),
                                   e.velocity_ned_mps, body_from_ned, e.omega_wrt_earth_b, cg,
@@ -604,50 +595,63 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
   gear_in.steering = controls_.steering;
   gear_in.brake_left = controls_.brake_left;
   gear_in.brake_right = controls_.brake_right;
-  gear_in.gear_down = !s.retractable_gear || position_of(s.gear) >= 1.0;
+  gear_in.gear_down = !s.retractable_gear || s.position(Surface::kGear) >= 1.0;
   gear_in.min_friction_blend_speed_mps = friction_band_floor_mps_;
   gear_in.max_damping_nspm = contact_damping_ceiling_nspm_;
   gear_->step(0.0, gear_in);
   e.gear_force_b = gear_->outputs().force_b_n;
   e.gear_moment_cg = gear_->outputs().moment_datum_b_nm - cg.cross(e.gear_force_b);
 
-  // 8. Mass balance: mass, CG and inertia as the last fuel burn left them (the CG above).
-
-  // The wrench for 9, the equations of motion.
-  e.wrench.force_b_n = e.aero_force_b + e.prop_force_b + e.gear_force_b;
-  e.wrench.moment_b_nm = e.aero_moment_cg + e.prop_moment_cg + e.gear_moment_cg;
 }
 
 void AircraftModel::advance_systems(double dt_s) {
   // The sub-models with a state move from the conditions of the present evaluation, in the
-  // executive order (1 atmosphere and 4 air data have no state).
+  // executive order (atmosphere, air data and aerodynamics have no state here: the stall
+  // hysteresis follows alpha in evaluate_current(); the equations of motion are integrated
+  // next, by integrate_body()).
   const Evaluation& e = *current_;
-
-  // 7. Ground reactions: what this step's integration carries (held over the step).
-  stable_ground_contact(dt_s);
-
-  // 2. Weather: the turbulence filters.
-  if (turbulence_) {
-    Turbulence::Inputs in;
-    in.tas_mps = e.tas_mps;
-    in.height_agl_m = e.height_agl_m;
-    in.dcm_ned_to_body = e.ned_from_body.transpose();
-    in.mean_wind_ned_mps = e.steady_wind_ned_mps;
-    turbulence_->step(dt_s, in);
-    gusts_active_ = true;
+  for (Stage stage : kExecutiveOrder) {
+    switch (stage) {
+      case Stage::kWeather:
+        if (turbulence_) {
+          Turbulence::Inputs in;
+          in.tas_mps = e.tas_mps;
+          in.height_agl_m = e.height_agl_m;
+          in.dcm_ned_to_body = e.ned_from_body.transpose();
+          in.mean_wind_ned_mps = e.steady_wind_ned_mps;
+          turbulence_->step(dt_s, in);
+          gusts_active_ = true;
+        }
+        break;
+      case Stage::kFlightControls:
+        for (Surface surface : Surfaces::kAll) {
+          step_actuator((*surfaces_)[surface], dt_s, Surfaces::command(surface, controls_));
+        }
+        break;
+      case Stage::kPropulsion:
+        advance_engines(dt_s);
+        break;
+      case Stage::kGroundReactions:
+        stable_ground_contact(dt_s);  // what this step's integration carries, held over it
+        break;
+      case Stage::kMassBalance:
+        if (!fuel_frozen_) {  // unless frozen by the instructor: burn the fuel
+          MassBalance::Inputs burn;
+          burn.engine_fuel_flow_kgps = fuel_flows_kgps_;
+          mass_->step(dt_s, burn);
+          update_mass_properties(false);
+        }
+        break;
+      case Stage::kAtmosphere:
+      case Stage::kAirData:
+      case Stage::kAerodynamics:
+      case Stage::kEquationsOfMotion:
+        break;
+    }
   }
+}
 
-  // 3. Flight controls.
-  Surfaces& s = *surfaces_;
-  step_actuator(s.elevator, dt_s, controls_.elevator_command());
-  step_actuator(s.aileron, dt_s, controls_.aileron_command());
-  step_actuator(s.rudder, dt_s, controls_.rudder_command());
-  step_actuator(s.flaps, dt_s, controls_.flaps);
-  step_actuator(s.speedbrake, dt_s, controls_.speedbrake);
-  step_actuator(s.spoilers, dt_s, controls_.spoilers);
-  step_actuator(s.gear, dt_s, controls_.gear_down ? 1.0 : 0.0);
-
-  // 5. Propulsion.
+void AircraftModel::advance_engines(double dt_s) {
   for (std::size_t i = 0; i < engines_.size(); ++i) {
     Engine& engine = engines_[i];
     if (engine.piston) {
@@ -658,15 +662,6 @@ void AircraftModel::advance_systems(double dt_s) {
       fuel_flows_kgps_[i] = engine.turbofan->outputs().fuel_flow_kgps;
     }
   }
-
-  // 6. Aerodynamics: the stall hysteresis follows alpha in evaluate_current().
-
-  // 8. Mass balance: burn the fuel (unless frozen by the instructor).
-  if (fuel_frozen_) return;
-  MassBalance::Inputs burn;
-  burn.engine_fuel_flow_kgps = fuel_flows_kgps_;
-  mass_->step(dt_s, burn);
-  update_mass_properties(false);
 }
 
 void AircraftModel::integrate_body(double dt_s) {
@@ -751,145 +746,6 @@ void AircraftModel::stable_ground_contact(double step_s) {
                                 contact_inverse_mass_horizontal_[i];
   }
   friction_band_floor_mps_ = friction_rate_times_band / allowed;
-}
-
-// ---- Outputs ---------------------------------------------------------------------------------
-
-void AircraftModel::fill_outputs() {
-  const Evaluation& e = *current_;
-  const RigidBodyState state = RigidBodyDynamics::unpack(x_);
-  const MassBalance::Outputs& mass = mass_->outputs();
-  AircraftOutputs& o = outputs_;
-  o.time_s = time_s_;
-
-  o.geodetic = e.geodetic;
-  o.height_agl_m = e.height_agl_m;
-  o.position_ecef_m = dynamics_.earth().ecef(state.position_m);
-  o.north_m = e.north_m;
-  o.east_m = e.east_m;
-
-  o.velocity_ned_mps = e.velocity_ned_mps;
-  o.velocity_b_mps = e.velocity_b_mps;
-  o.ground_speed_mps = std::hypot(e.velocity_ned_mps.x(), e.velocity_ned_mps.y());
-  o.climb_rate_mps = -e.velocity_ned_mps.z();
-
-  o.ned_from_body = e.ned_from_body;
-  o.euler = euler_from_dcm(e.ned_from_body);
-  Eigen::Quaterniond q(e.ned_from_body);
-  if (q.w() < 0.0) q.coeffs() *= -1.0;  // scalar part >= 0: one of the two equal quaternions
-  o.q_ned_to_body = to_e0123(q.normalized());
-
-  o.omega_b_rps = state.omega_b_rps;
-  o.omega_b_wrt_earth_rps = e.omega_wrt_earth_b;
-  o.omega_dot_b_rps2 = e.accelerations.omega_dot_b_rps2;
-  o.acceleration_b_mps2 = e.accelerations.acceleration_b_mps2;
-  o.velocity_b_dot_mps2 = e.velocity_b_dot_mps2;
-  o.specific_force_cg_b_mps2 = e.accelerations.specific_force_b_mps2;
-  o.specific_force_eye_b_mps2 = RigidBodyDynamics::specific_force_at_b(
-      e.accelerations, state.omega_b_rps, pack_.geometry.pilot_eye_point_m - mass.cg_m);
-  o.load_factor_z = -o.specific_force_cg_b_mps2.z() / units::kStandardGravityMps2;
-
-  o.tas_mps = e.tas_mps;
-  o.cas_mps = cas_from_tas_mps(e.tas_mps, e.air);
-  o.eas_mps = eas_from_tas_mps(e.tas_mps, e.air);
-  o.mach = e.mach;
-  o.alpha_rad = e.alpha_rad;
-  o.beta_rad = e.beta_rad;
-  o.alpha_dot_radps = alpha_dot_radps_;
-  o.beta_dot_radps = beta_dot_radps_;
-  o.qbar_pa = e.qbar_pa;
-  o.static_pressure_pa = e.air.pressure_pa;
-  o.temperature_k = e.air.temperature_k;
-  o.density_kgpm3 = e.air.density_kgpm3;
-  o.speed_of_sound_mps = e.air.speed_of_sound_mps;
-  o.pressure_altitude_m = pressure_altitude_m(e.air.pressure_pa);
-  o.wind_ned_mps = e.wind_ned_mps;
-  o.gust_ned_mps = e.gust_ned_mps;
-  o.gust_rates_b_rps = e.gust_rates_b_rps;
-  o.air_velocity_b_mps = e.air_velocity_b_mps;
-
-  const Surfaces& s = *surfaces_;
-  o.elevator_rad = position_of(s.elevator);
-  o.aileron_rad = position_of(s.aileron);
-  o.rudder_rad = position_of(s.rudder);
-  o.flap_norm = position_of(s.flaps) / s.flap_position_at_full;
-  o.flap_rad = o.flap_norm * s.flap_full_travel_rad;
-  o.speedbrake_norm = position_of(s.speedbrake);
-  o.spoiler_norm = position_of(s.spoilers);
-  o.gear_norm = s.retractable_gear ? position_of(s.gear) : 1.0;
-
-  o.aero = e.aero;
-  o.aero_force_b_n = e.aero_force_b;
-  o.aero_moment_b_nm = e.aero_moment_cg;
-  o.propulsion_force_b_n = e.prop_force_b;
-  o.propulsion_moment_b_nm = e.prop_moment_cg;
-  o.gear_force_b_n = e.gear_force_b;
-  o.gear_moment_b_nm = e.gear_moment_cg;
-  o.total_force_b_n = e.wrench.force_b_n;
-  o.total_moment_b_nm = e.wrench.moment_b_nm;
-  o.stalled = aerodynamics_.stall_hysteresis_active();
-
-  o.mass_kg = mass.mass_kg;
-  o.fuel_kg = mass.fuel_kg;
-  o.cg_m = mass.cg_m;
-  o.inertia_kgm2 = mass.inertia_kgm2;
-  std::copy(mass.tank_contents_kg.begin(), mass.tank_contents_kg.end(), o.tank_fuel_kg.begin());
-
-  fill_engine_outputs();
-  fill_contact_outputs();
-}
-
-void AircraftModel::fill_engine_outputs() {
-  AircraftOutputs& o = outputs_;
-  o.total_thrust_n = 0.0;
-  const auto& starved = mass_->outputs().engine_starved;
-  for (std::size_t i = 0; i < engines_.size(); ++i) {
-    const Engine& engine = engines_[i];
-    EngineOutputs& out = o.engines[i];
-    out.failed = engine.failed;
-    out.starved = i < starved.size() && starved[i];
-    out.running = engine_burning(i) && !engine.failed;
-    out.throttle = controls_.throttle[i];
-    if (engine.piston) {
-      const PistonPowerplant::Outputs& p = engine.piston->outputs();
-      out.thrust_n = p.thrust_n;
-      out.rpm = p.engine_rpm;
-      out.propeller_rpm = p.propeller_rpm;
-      out.manifold_pressure_pa = p.manifold_pressure_pa;
-      out.power_w = p.brake_power_w;
-      out.fuel_flow_kgps = p.fuel_flow_kgps;
-      out.egt_k = p.exhaust_gas_temperature_k;
-    } else {
-      const Turbofan::Outputs& t = engine.turbofan->outputs();
-      out.thrust_n = t.thrust_n;
-      out.n1_pct = t.n1_pct;
-      out.n2_pct = t.n2_pct;
-      out.fuel_flow_kgps = t.fuel_flow_kgps;
-      out.egt_k = t.exhaust_gas_temperature_k;
-    }
-    out.has_egt = true;
-    o.total_thrust_n += out.thrust_n;
-  }
-}
-
-void AircraftModel::fill_contact_outputs() {
-  // The gear's last evaluation is the present state's: evaluate_current() always runs last.
-  AircraftOutputs& o = outputs_;
-  const LandingGear::Outputs& gear = gear_->outputs();
-  o.weight_on_wheels = gear.weight_on_wheels;
-  o.any_contact = false;
-  o.gear_normal_force_n = 0.0;
-  for (std::size_t i = 0; i < o.contacts.size(); ++i) {
-    const LandingGear::ContactOutput& c = gear.contacts[i];
-    ContactOutputs& out = o.contacts[i];
-    out.weight_on_wheels = c.in_contact && c.normal_force_n > 0.0;
-    out.compression_m = c.compression_m;
-    out.compression_rate_mps = c.compression_rate_mps;
-    out.normal_force_n = c.normal_force_n;
-    out.force_b_n = c.force_b_n;
-    o.any_contact = o.any_contact || out.weight_on_wheels;
-    o.gear_normal_force_n += c.normal_force_n;
-  }
 }
 
 }  // namespace fedsim::flight

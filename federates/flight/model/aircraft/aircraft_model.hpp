@@ -32,7 +32,7 @@ namespace fedsim::flight {
 /// The executive. Construct from a pack, reset() to initial conditions (or trim, or
 /// reposition), then set_controls() and step() once per frame and read outputs().
 ///
-/// Order of the sub-models (stated once, in evaluate()):
+/// Order of the sub-models (stated once, as data: executive_order.hpp):
 ///   1 atmosphere at the CG altitude, 2 weather (steady wind, microburst, turbulence),
 ///   3 flight controls (actuator positions), 4 air data (TAS, CAS, EAS, Mach, alpha, beta,
 ///   qbar), 5 propulsion, 6 aerodynamics, 7 ground reactions, 8 mass balance,
@@ -163,6 +163,7 @@ class AircraftModel {
 
  private:
   struct Engine;
+  enum class Surface : std::uint8_t;
   struct Surfaces;
   struct Evaluation;
 
@@ -171,6 +172,13 @@ class AircraftModel {
   /// The force chain (executive steps 1-8) at a state; update_hysteresis for the present
   /// state only (trial states of the integrator hold the stall flag).
   void evaluate(const RigidBodyState& state, Evaluation& eval, bool update_hysteresis);
+  void evaluate_kinematics(const RigidBodyState& state, Evaluation& e) const;
+  void evaluate_weather(Evaluation& e) const;
+  void evaluate_air_data(Evaluation& e) const;
+  void evaluate_propulsion(Evaluation& e) const;
+  void evaluate_aerodynamics(const RigidBodyState& state, Evaluation& e, bool update_hysteresis);
+  void evaluate_ground_reactions(Evaluation& e);
+  void advance_engines(double dt_s);
   void evaluate_current();
   void advance_systems(double dt_s);
   void integrate_body(double dt_s);

@@ -1,0 +1,92 @@
+// The aircraft executive's sub-model holders and its evaluation record: private to
+// aircraft_model.cpp (the executive) and aircraft_model_outputs.cpp (output packaging).
+#pragma once
+
+#include "flight/model/aircraft/aircraft_model.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+namespace fedsim::flight {
+
+// ---- Sub-model holders -----------------------------------------------------------------------
+
+struct AircraftModel::Engine {
+  EngineType type = EngineType::piston_propeller;
+  std::optional<PistonPowerplant> piston;
+  std::optional<Turbofan> turbofan;
+  double idle_rpm = 0.0;
+  bool running = true;  // ignition and fuel selected on
+  bool failed = false;  // instructor failure
+};
+
+/// The actuated surfaces (and the gear), each driven by one command of AircraftControls.
+enum class AircraftModel::Surface : std::uint8_t {
+  kElevator, kAileron, kRudder, kFlaps, kSpeedbrake, kSpoilers, kGear };
+
+struct AircraftModel::Surfaces {
+  static constexpr std::array<Surface, 7> kAll = {Surface::kElevator, Surface::kAileron,
+                                                  Surface::kRudder,   Surface::kFlaps,
+                                                  Surface::kSpeedbrake, Surface::kSpoilers,
+                                                  Surface::kGear};
+  /// The command an actuator follows (the gear: 0 up .. 1 down, at the pack's transit rate).
+  static double command(Surface surface, const AircraftControls& c) {
+    switch (surface) {
+      case Surface::kElevator: return c.elevator_command();
+      case Surface::kAileron: return c.aileron_command();
+      case Surface::kRudder: return c.rudder_command();
+      case Surface::kFlaps: return c.flaps;
+      case Surface::kSpeedbrake: return c.speedbrake;
+      case Surface::kSpoilers: return c.spoilers;
+      case Surface::kGear: return c.gear_down ? 1.0 : 0.0;
+    }
+    return 0.0;
+  }
+  std::optional<Actuator>& operator[](Surface surface) {
+    return actuators[static_cast<std::size_t>(surface)];
+  }
+  /// An actuator's position (0 for a surface the pack does not have).
+  double position(Surface surface) const {
+    const auto& a = actuators[static_cast<std::size_t>(surface)];
+    return a ? a->outputs().position_rad : 0.0;
+  }
+  std::array<std::optional<Actuator>, kAll.size()> actuators;
+  bool retractable_gear = false;
+  double flap_position_at_full = 1.0;  // actuator position at flap command 1 (rad or 1)
+  double flap_full_travel_rad = 0.0;
+};
+
+/// Everything one evaluation of the force chain works out, in executive order.
+struct AircraftModel::Evaluation {
+  // Kinematics of the state.
+  GeodeticPosition geodetic;
+  Eigen::Matrix3d ref_from_body = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d ned_from_body = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_wrt_earth_b = Eigen::Vector3d::Zero();
+  double height_agl_m = 0.0;
+  double north_m = 0.0, east_m = 0.0;
+  // 1 atmosphere.
+  AirProperties air;
+  // 2 weather.
+  Eigen::Vector3d steady_wind_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();
+  // 4 air data.
+  Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
+  double tas_mps = 0.0, alpha_rad = 0.0, beta_rad = 0.0, mach = 0.0, qbar_pa = 0.0;
+  // 5-7 forces (body axes) and moments about the CG.
+  Aerodynamics::Outputs aero;
+  Eigen::Vector3d aero_force_b = Eigen::Vector3d::Zero(), aero_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d prop_force_b = Eigen::Vector3d::Zero(), prop_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gear_force_b = Eigen::Vector3d::Zero(), gear_moment_cg = Eigen::Vector3d::Zero();
+  Wrench wrench;
+  // Accelerations (current evaluation only).
+  RigidBodyAccelerations accelerations;
+  Eigen::Vector3d velocity_b_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_b_dot_mps2 = Eigen::Vector3d::Zero();
+};
+
+}  // namespace fedsim::flight
