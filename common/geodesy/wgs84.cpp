@@ -44,7 +44,7 @@ Eigen::Matrix3d Wgs84::ned_from_ecef(double lat_rad, double lon_rad) {
   return c;
 }
 
-Eigen::Vector3d Wgs84::earth_rate_ecef() { return {0.0, 0.0, wgs84::kEarthRateRps}; }
+Eigen::Vector3d Wgs84::earth_rate_ecef() { return {0.0, 0.0, wgs84::kEarthRateRadps}; }
 
 Eigen::Vector3d Wgs84::gravitation_ecef(const Eigen::Vector3d& position_ecef_m) {
   // Gradient of U = -GM/r [1 - J2 (a/r)^2 (3 sin^2(lat_c) - 1) / 2] (e.g. Vallado, eq. 8-25).

@@ -19,7 +19,7 @@ inline constexpr double kFlattening = 1.0 / 298.257223563;
 inline constexpr double kSemiMinorAxisM = kSemiMajorAxisM * (1.0 - kFlattening);
 inline constexpr double kEccentricitySquared = kFlattening * (2.0 - kFlattening);
 inline constexpr double kGmM3ps2 = 3.986004418e14;     // earth's gravitational constant
-inline constexpr double kEarthRateRps = 7.292115e-5;   // rotation rate about the ECEF z axis
+inline constexpr double kEarthRateRadps = 7.292115e-5;   // rotation rate about the ECEF z axis
 inline constexpr double kJ2 = 1.08262982131e-3;        // -sqrt(5) * C(2,0) of EGM96/WGS-84
 }  // namespace wgs84
 

@@ -59,11 +59,11 @@ EulerAngles euler_from_quaternion(const Eigen::Quaterniond& q) {
   return euler_from_dcm(dcm_from_quaternion(q));
 }
 
-Eigen::Vector4d quaternion_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& omega_rps,
+Eigen::Vector4d quaternion_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& omega_radps,
                                 double constraint_gain_per_s) {
-  const double p = omega_rps.x();
-  const double r_q = omega_rps.y();
-  const double r = omega_rps.z();
+  const double p = omega_radps.x();
+  const double r_q = omega_radps.y();
+  const double r = omega_radps.z();
   const double lambda = 1.0 - q.squaredNorm();
   const double k_lambda = constraint_gain_per_s * lambda;
   return {-0.5 * (q[1] * p + q[2] * r_q + q[3] * r) + k_lambda * q[0],  // eq. 3.67

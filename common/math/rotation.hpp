@@ -31,7 +31,7 @@ EulerAngles euler_from_quaternion(const Eigen::Quaterniond& q);
 /// Quaternion rate for body angular velocity omega (body axes, relative to the parent frame)
 /// with the algebraic-constraint correction k * (1 - |q|^2) * q (eqs 3.59-3.62 and 3.67-3.70).
 /// q is (e0, e1, e2, e3); choose k h <= 1 for step h.
-Eigen::Vector4d quaternion_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& omega_rps,
+Eigen::Vector4d quaternion_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& omega_radps,
                                 double constraint_gain_per_s);
 
 /// Conversions between Eigen quaternions and the (e0, e1, e2, e3) vector used in state vectors.

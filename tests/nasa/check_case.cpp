@@ -38,10 +38,10 @@ class SphereDrag : public ForceSource {
     const GeodeticPosition where = earth.geodetic(state.position_m);
     const AirProperties air = atmosphere_.at(where.alt_m);
     const Eigen::Vector3d wind_ref = earth.ned_from_reference(where).transpose() * wind_ned_mps_;
-    const Eigen::Vector3d air_velocity_b = state.attitude.conjugate() * (state.velocity_mps - wind_ref);
-    const double speed = air_velocity_b.norm();
+    const Eigen::Vector3d air_velocity_body = state.attitude.conjugate() * (state.velocity_mps - wind_ref);
+    const double speed = air_velocity_body.norm();
     // F = -qbar S CD v/|v| = -(rho/2) S CD |v| v
-    wrench.force_b_n = -0.5 * air.density_kgpm3 * cd_s_m2_ * speed * air_velocity_b;
+    wrench.force_body_n = -0.5 * air.density_kgpm3 * cd_s_m2_ * speed * air_velocity_body;
     return wrench;
   }
 
@@ -66,8 +66,8 @@ class BrickDamping : public ForceSource {
     const double rho = atmosphere_.at(where.alt_m).density_kgpm3;
     const double speed = state.velocity_mps.norm();  // no wind in the brick cases
     const double k = 0.25 * rho * speed * kBrickAreaM2 * kBrickDampingDerivative;
-    const Eigen::Vector3d& w = state.omega_b_rps;
-    wrench.moment_b_nm = {k * kBrickSpanM * kBrickSpanM * w.x(),
+    const Eigen::Vector3d& w = state.omega_body_radps;
+    wrench.moment_body_nm = {k * kBrickSpanM * kBrickSpanM * w.x(),
                           k * kBrickChordM * kBrickChordM * w.y(),
                           k * kBrickSpanM * kBrickSpanM * w.z()};
     return wrench;
@@ -108,7 +108,7 @@ std::vector<CheckCase> atmospheric_check_cases() {
   c.title = "tumbling brick, no damping";
   c.body = CheckBody::kBrick;
   c.initial = dropped_at_30000_ft();
-  c.initial.omega_b_rps = Eigen::Vector3d(10.0, 20.0, 30.0) * kDeg;  // relative to inertial
+  c.initial.omega_body_radps = Eigen::Vector3d(10.0, 20.0, 30.0) * kDeg;  // relative to inertial
   cases.push_back(c);
 
   c.id = "Atmos_03";
@@ -166,8 +166,8 @@ TimeHistory simulate(const CheckCase& check_case, IntegrationMethod method, doub
     throw std::invalid_argument("the output period must be a whole number of steps");
   }
   TimeHistory history({"altitude_m", "north_m", "east_m", "v_north_mps", "v_east_mps",
-                       "v_down_mps", "phi_rad", "theta_rad", "psi_rad", "p_rps", "q_rps",
-                       "r_rps", "lat_rad", "lon_rad"});
+                       "v_down_mps", "phi_rad", "theta_rad", "psi_rad", "p_radps", "q_radps",
+                       "r_radps", "lat_rad", "lon_rad"});
   const double cos_lat0 = std::cos(check_case.initial.position.lat_rad);
   const int frames = static_cast<int>(std::lround(check_case.duration_s / output_period_s));
   for (int frame = 0; frame <= frames; ++frame) {
@@ -177,8 +177,8 @@ TimeHistory simulate(const CheckCase& check_case, IntegrationMethod method, doub
                    {g.alt_m, g.lat_rad * wgs84::kSemiMajorAxisM,
                     g.lon_rad * wgs84::kSemiMajorAxisM * cos_lat0, out.velocity_ned_mps.x(),
                     out.velocity_ned_mps.y(), out.velocity_ned_mps.z(), out.euler.phi_rad,
-                    out.euler.theta_rad, out.euler.psi_rad, out.omega_b_rps.x(),
-                    out.omega_b_rps.y(), out.omega_b_rps.z(), g.lat_rad, g.lon_rad});
+                    out.euler.theta_rad, out.euler.psi_rad, out.omega_body_radps.x(),
+                    out.omega_body_radps.y(), out.omega_body_radps.z(), g.lat_rad, g.lon_rad});
     if (frame < frames) body.step(output_period_s, substeps, forces);
   }
   return history;

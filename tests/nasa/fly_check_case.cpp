@@ -33,7 +33,7 @@ TimeHistory nasa_channels_from_fly_csv(const std::string& csv_path) {
   // IDL fields (idl/aircraft_state.idl), time first.
   const csv::NumericTable csv = csv::NumericTable::load(csv_path);
   TimeHistory history({"altitude_m", "north_m", "east_m", "v_north_mps", "v_east_mps", "v_down_mps",
-                       "phi_rad", "theta_rad", "psi_rad", "p_rps", "q_rps", "r_rps", "lat_rad",
+                       "phi_rad", "theta_rad", "psi_rad", "p_radps", "q_radps", "r_radps", "lat_rad",
                        "lon_rad"});
   const auto& t = csv.column("sim_time_s");
   const auto& lat = csv.column("latitude_rad");
@@ -45,9 +45,9 @@ TimeHistory nasa_channels_from_fly_csv(const std::string& csv_path) {
   const auto& phi = csv.column("phi_rad");
   const auto& theta = csv.column("theta_rad");
   const auto& psi = csv.column("psi_rad");
-  const auto& p = csv.column("omega_body_rps[0]");
-  const auto& q = csv.column("omega_body_rps[1]");
-  const auto& r = csv.column("omega_body_rps[2]");
+  const auto& p = csv.column("omega_body_radps[0]");
+  const auto& q = csv.column("omega_body_radps[1]");
+  const auto& r = csv.column("omega_body_radps[2]");
   if (csv.rows() == 0) throw std::runtime_error(csv_path + ": no rows");
   // Arc lengths as NasaReference makes them: from the equator, and from the meridian at the
   // starting latitude's parallel.

@@ -25,9 +25,9 @@ inline constexpr std::array<Channel, 12> kChannels = {{
     {"phi_rad", "euler", true},
     {"theta_rad", "euler", false},
     {"psi_rad", "euler", true},
-    {"p_rps", "body_rates", false},
-    {"q_rps", "body_rates", false},
-    {"r_rps", "body_rates", false},
+    {"p_radps", "body_rates", false},
+    {"q_radps", "body_rates", false},
+    {"r_radps", "body_rates", false},
 }};
 
 }  // namespace fedsim::flight::nasa

@@ -144,7 +144,7 @@ TEST(NasaReference, ConvertsNasaUnitsToSi) {
   EXPECT_NEAR(sim04.at("phi_rad", 30.0), -0.125399679189 * kDeg, 1e-14);
   EXPECT_NEAR(sim04.at("east_m", 30.0), 5.74552213287e-5 * kDeg * 6378137.0, 1e-9);
   const TimeHistory sim02 = NasaReference::read_nasa_csv(kDataDir + "Atmos_02/Atmos_02_sim_02.csv");
-  EXPECT_NEAR(sim02.at("p_rps", 0.0), 10.0 * kDeg, 1e-9);
+  EXPECT_NEAR(sim02.at("p_radps", 0.0), 10.0 * kDeg, 1e-9);
   // sim_03 records no attitude: those channels are absent, not zero.
   const TimeHistory sim03 = NasaReference::read_nasa_csv(kDataDir + "Atmos_01/Atmos_01_sim_03.csv");
   EXPECT_FALSE(sim03.has("phi_rad"));

@@ -36,9 +36,9 @@ constexpr Conversion kConversions[] = {
     {"eulerAngle_deg_Roll", "phi_rad", kDeg},
     {"eulerAngle_deg_Pitch", "theta_rad", kDeg},
     {"eulerAngle_deg_Yaw", "psi_rad", kDeg},
-    {"bodyAngularRateWrtEi_deg_s_Roll", "p_rps", kDeg},
-    {"bodyAngularRateWrtEi_deg_s_Pitch", "q_rps", kDeg},
-    {"bodyAngularRateWrtEi_deg_s_Yaw", "r_rps", kDeg},
+    {"bodyAngularRateWrtEi_deg_s_Roll", "p_radps", kDeg},
+    {"bodyAngularRateWrtEi_deg_s_Pitch", "q_radps", kDeg},
+    {"bodyAngularRateWrtEi_deg_s_Yaw", "r_radps", kDeg},
 };
 }  // namespace
 

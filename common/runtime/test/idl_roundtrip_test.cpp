@@ -60,7 +60,7 @@ TEST(IdlRoundTrip, ControlsAndAircraftState) {
   msg::AircraftState s;
   s.latitude_rad(0.6588);
   s.position_ecef_m()[2] = 4.1e6;
-  s.q_ned_to_body()[0] = 1.0;
+  s.q_ned_from_body()[0] = 1.0;
   s.air().mach(0.78);
   s.gear()[7].normal_force_n(1000.0f);
   s.gear_count(3);

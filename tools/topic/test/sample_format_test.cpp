@@ -51,7 +51,7 @@ msg::AircraftState make_state() {
   s.longitude_rad(-2.135);
   s.altitude_msl_m(1.0 / 3.0);
   s.velocity_ned_mps({1.5, -2.25, 3.0});
-  s.q_ned_to_body({1.0, 0.0, 0.0, 0.0});
+  s.q_ned_from_body({1.0, 0.0, 0.0, 0.0});
   s.air().tas_mps(55.5);
   s.air().wind_ned_mps({0.1, 0.2, 0.30000000000000004});
   s.on_ground(true);
@@ -198,7 +198,7 @@ TEST(CsvLayout, FlattensEveryFieldWithSimTimeFirst) {
   EXPECT_EQ(cols[1], "aircraft_id");
   EXPECT_EQ(cols[2], "stamp.frame");
   EXPECT_EQ(cols[3], "stamp.sim_time_s");
-  for (const char* name : {"velocity_ned_mps[0]", "velocity_ned_mps[2]", "q_ned_to_body[3]",
+  for (const char* name : {"velocity_ned_mps[0]", "velocity_ned_mps[2]", "q_ned_from_body[3]",
                            "air.wind_ned_mps[2]", "air.density_kgpm3", "gear[0].weight_on_wheels",
                            "gear[7].normal_force_n", "gear_count"}) {
     EXPECT_NE(std::find(cols.begin(), cols.end(), name), cols.end()) << name;

@@ -122,10 +122,10 @@ TEST_F(FedsimFly, TrimsPrintsJsonAndWritesOneRowPerFrame) {
   EXPECT_GT(eng.column("rpm").front(), 1500.0);  // settled at the trimmed throttle
   EXPECT_GT(eng.column("exhaust_temperature_k").front(), 800.0);
   for (const char* column :
-       {"position_ecef_m[0]", "velocity_ned_mps[0]", "velocity_body_mps[0]", "omega_body_rps[0]",
-        "q_ned_to_body[0]", "air.alpha_rad", "air.cas_mps", "air.mach", "air.qbar_pa",
+       {"position_ecef_m[0]", "velocity_ned_mps[0]", "velocity_body_mps[0]", "omega_body_radps[0]",
+        "q_ned_from_body[0]", "air.alpha_rad", "air.cas_mps", "air.mach", "air.qbar_pa",
         "total_thrust_n", "mass_kg", "gear_normal_force_n", "gear[0].normal_force_n",
-        "specific_force_eye_mps2[2]", "aero.lift", "force_body_n[2]", "moment_body_nm[1]",
+        "specific_force_eye_body_mps2[2]", "aero.lift", "force_body_n[2]", "moment_body_nm[1]",
         "cg_pack_m[0]", "load_factor_z", "north_m", "dropped_steps"}) {
     EXPECT_TRUE(csv.has(column)) << column;
   }
@@ -223,7 +223,7 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
   const csv::NumericTable csv = state(out);
   const auto& t = csv.column("sim_time_s");
   const auto& elevator = csv.column("controls.elevator");
-  const auto& q = csv.column("omega_body_rps[1]");
+  const auto& q = csv.column("omega_body_radps[1]");
   double q_max = 0.0;
   constexpr double kDt = 0.01;
   for (std::size_t i = 1; i < csv.rows(); ++i) {

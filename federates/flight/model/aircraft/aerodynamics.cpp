@@ -32,7 +32,7 @@ Aerodynamics::Aerodynamics(const AeroModelSpec& model, const ReferenceGeometry& 
   }
 }
 
-Eigen::Matrix3d Aerodynamics::wind_to_body(double alpha_rad, double beta_rad) {
+Eigen::Matrix3d Aerodynamics::body_from_wind(double alpha_rad, double beta_rad) {
   // Columns are the wind axes expressed in body axes: x_w along the air-relative velocity
   // (cos a cos b, sin b, sin a cos b), z_w in the plane of symmetry (seed 3.5.3).
   const double ca = std::cos(alpha_rad), sa = std::sin(alpha_rad);
@@ -60,9 +60,9 @@ void Aerodynamics::fill_variables(const Inputs& in, double alpha_rad, double bet
   set(AeroVariable::abs_beta_rad, std::abs(beta_rad));
   set(AeroVariable::mach, in.mach);
   set(AeroVariable::qbar_pa, in.qbar_pa);
-  set(AeroVariable::p_hat, in.omega_air_b.x() * b_2v);
-  set(AeroVariable::q_hat, in.omega_air_b.y() * c_2v);
-  set(AeroVariable::r_hat, in.omega_air_b.z() * b_2v);
+  set(AeroVariable::p_hat, in.omega_air_body.x() * b_2v);
+  set(AeroVariable::q_hat, in.omega_air_body.y() * c_2v);
+  set(AeroVariable::r_hat, in.omega_air_body.z() * b_2v);
   set(AeroVariable::alphadot_hat, in.alphadot_radps * c_2v);
   set(AeroVariable::betadot_hat, in.betadot_radps * b_2v);
   set(AeroVariable::elevator_rad, in.elevator_rad);
@@ -148,8 +148,8 @@ Aerodynamics::Outputs Aerodynamics::compute(const Inputs& in, bool stall_hystere
   out.drag_n = qbar_s * out.CD;
   out.side_force_n = qbar_s * out.CY;
   const Eigen::Vector3d force_w(-out.drag_n, out.side_force_n, -out.lift_n);
-  out.force_b = wind_to_body(in.alpha_rad, in.beta_rad) * force_w;
-  out.moment_b = qbar_s * Eigen::Vector3d(geometry_.wing_span_m * out.Cl,
+  out.force_body = body_from_wind(in.alpha_rad, in.beta_rad) * force_w;
+  out.moment_body = qbar_s * Eigen::Vector3d(geometry_.wing_span_m * out.Cl,
                                           geometry_.mean_chord_m * out.Cm,
                                           geometry_.wing_span_m * out.Cn);
   return out;

@@ -43,7 +43,7 @@ class Aerodynamics {
     double tas_mps = 0.0;
     double mach = 0.0;
     double qbar_pa = 0.0;
-    Eigen::Vector3d omega_air_b = Eigen::Vector3d::Zero();  // p, q, r relative to the air, rad/s
+    Eigen::Vector3d omega_air_body = Eigen::Vector3d::Zero();  // p, q, r relative to the air, rad/s
     double alphadot_radps = 0.0;
     double betadot_radps = 0.0;
     double elevator_rad = 0.0;    // trailing edge down positive
@@ -63,8 +63,8 @@ class Aerodynamics {
     double CL = 0.0, CD = 0.0, CY = 0.0;
     double Cl = 0.0, Cm = 0.0, Cn = 0.0;
     double lift_n = 0.0, drag_n = 0.0, side_force_n = 0.0;  // wind axes
-    Eigen::Vector3d force_b = Eigen::Vector3d::Zero();      // N, body axes
-    Eigen::Vector3d moment_b = Eigen::Vector3d::Zero();     // N m, body axes, about the aero RP
+    Eigen::Vector3d force_body = Eigen::Vector3d::Zero();      // N, body axes
+    Eigen::Vector3d moment_body = Eigen::Vector3d::Zero();     // N m, body axes, about the aero RP
     bool stall_hysteresis = false;                          // the flag used for this result
     double attached_weight = 1.0;  // share of the pack's build-up (1 inside its data)
   };
@@ -90,7 +90,7 @@ class Aerodynamics {
   const AeroFlowEnvelope& envelope() const { return envelope_; }
 
   /// Direction cosine matrix turning wind-axis vectors into body axes.
-  static Eigen::Matrix3d wind_to_body(double alpha_rad, double beta_rad);
+  static Eigen::Matrix3d body_from_wind(double alpha_rad, double beta_rad);
 
  private:
   static constexpr std::size_t kSlotCount = kAeroVariableCount + AeroModelSpec::kMaxFactors;

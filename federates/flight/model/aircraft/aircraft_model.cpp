@@ -261,7 +261,7 @@ bool AircraftModel::state_is_sound() const {
 
 bool AircraftModel::evaluation_is_finite() const {
   const Evaluation& e = *current_;
-  return e.wrench.force_b_n.allFinite() && e.wrench.moment_b_nm.allFinite() &&
+  return e.wrench.force_body_n.allFinite() && e.wrench.moment_body_nm.allFinite() &&
          std::isfinite(e.tas_mps) && std::isfinite(alpha_dot_radps_) &&
          std::isfinite(beta_dot_radps_);
 }
@@ -353,7 +353,7 @@ void AircraftModel::set_state(const AircraftInitialConditions& state) {
           ? state.velocity_mps
           : Eigen::Vector3d(dcm_from_euler(state.attitude) * state.velocity_mps);
   body.attitude = state.attitude;
-  body.omega_b_rps = state.omega_b_rps;
+  body.omega_body_radps = state.omega_body_radps;
   body.omega_relative_to_earth = state.omega_relative_to_earth;
   x_ = RigidBodyDynamics::pack(dynamics_.initial_state(body));
   integrator_.restart();
@@ -415,7 +415,7 @@ PistonPowerplant::Inputs AircraftModel::piston_inputs(std::size_t i) const {
   in.temperature_k = e.air.temperature_k;
   in.density_kgpm3 = e.air.density_kgpm3;
   in.speed_of_sound_mps = e.air.speed_of_sound_mps;
-  in.air_velocity_b_mps = e.air_velocity_b_mps;
+  in.air_velocity_body_mps = e.air_velocity_body_mps;
   return in;
 }
 
@@ -461,8 +461,8 @@ void AircraftModel::evaluate(const RigidBodyState& state, Evaluation& e, bool up
         break;  // mass, CG and inertia as the last fuel burn left them (the CG is used above)
       case Stage::kEquationsOfMotion:
         // The wrench the equations of motion integrate.
-        e.wrench.force_b_n = e.aero_force_b + e.prop_force_b + e.gear_force_b;
-        e.wrench.moment_b_nm = e.aero_moment_cg + e.prop_moment_cg + e.gear_moment_cg;
+        e.wrench.force_body_n = e.aero_force_body + e.prop_force_body + e.gear_force_body;
+        e.wrench.moment_body_nm = e.aero_moment_cg + e.prop_moment_cg + e.gear_moment_cg;
         break;
     }
   }
@@ -477,7 +477,7 @@ void AircraftModel::evaluate_kinematics(const RigidBodyState& state, Evaluation&
   const Eigen::Matrix3d ned_from_ref = earth.ned_from_reference(e.geodetic);
   e.ned_from_body = ned_from_ref * e.ref_from_body;
   e.velocity_ned_mps = ned_from_ref * state.velocity_mps;
-  e.omega_wrt_earth_b = state.omega_b_rps - e.ref_from_body.transpose() * earth.frame_rate_rps();
+  e.omega_wrt_earth_body = state.omega_body_radps - e.ref_from_body.transpose() * earth.frame_rate_radps();
   e.height_agl_m = e.geodetic.alt_m - runway_elevation_m_;
   if (options_.earth == EarthModelKind::kFlat) {
     e.north_m = state.position_m.x();
@@ -498,10 +498,10 @@ void AircraftModel::evaluate_weather(Evaluation& e) const {
   }
   if (turbulence_ && gusts_active_) {
     e.gust_ned_mps = turbulence_->outputs().gust_ned_mps;
-    e.gust_rates_b_rps = turbulence_->outputs().gust_rates_b_radps;
+    e.gust_rates_body_radps = turbulence_->outputs().gust_rates_body_radps;
   } else {
     e.gust_ned_mps.setZero();
-    e.gust_rates_b_rps.setZero();
+    e.gust_rates_body_radps.setZero();
   }
   e.wind_ned_mps += e.gust_ned_mps;
 
@@ -510,8 +510,8 @@ void AircraftModel::evaluate_weather(Evaluation& e) const {
 void AircraftModel::evaluate_air_data(Evaluation& e) const {
   const Eigen::Matrix3d body_from_ned = e.ned_from_body.transpose();
   // 4. Air data.
-  e.air_velocity_b_mps = body_from_ned * (e.velocity_ned_mps - e.wind_ned_mps);
-  const Eigen::Vector3d& va = e.air_velocity_b_mps;
+  e.air_velocity_body_mps = body_from_ned * (e.velocity_ned_mps - e.wind_ned_mps);
+  const Eigen::Vector3d& va = e.air_velocity_body_mps;
   e.tas_mps = va.norm();
   e.alpha_rad = std::atan2(va.z(), va.x());
   e.beta_rad = std::atan2(va.y(), std::hypot(va.x(), va.z()));
@@ -523,24 +523,24 @@ void AircraftModel::evaluate_air_data(Evaluation& e) const {
 void AircraftModel::evaluate_propulsion(Evaluation& e) const {
   const Eigen::Vector3d& cg = mass_->outputs().cg_m;
   // 5. Propulsion: each engine's force and moment about the datum (held over the step).
-  e.prop_force_b.setZero();
+  e.prop_force_body.setZero();
   Eigen::Vector3d prop_moment_datum = Eigen::Vector3d::Zero();
-  e.wrench.rotor_momentum_b_kgm2ps.setZero();
+  e.wrench.rotor_momentum_body_kgm2ps.setZero();
   for (const Engine& engine : engines_) {
     if (engine.piston) {
       const PistonPowerplant::Outputs& out = engine.piston->outputs();
-      e.prop_force_b += out.force_b_n;
-      prop_moment_datum += out.moment_datum_b_nm;
+      e.prop_force_body += out.force_body_n;
+      prop_moment_datum += out.moment_datum_body_nm;
       if (options_.engine_gyroscopic_moments) {
-        e.wrench.rotor_momentum_b_kgm2ps += out.rotor_angular_momentum_b_kgm2ps;
+        e.wrench.rotor_momentum_body_kgm2ps += out.rotor_angular_momentum_body_kgm2ps;
       }
     } else {
       const Turbofan::Outputs& out = engine.turbofan->outputs();
-      e.prop_force_b += out.force_b_n;
-      prop_moment_datum += out.moment_datum_b_nm;
+      e.prop_force_body += out.force_body_n;
+      prop_moment_datum += out.moment_datum_body_nm;
     }
   }
-  e.prop_moment_cg = prop_moment_datum - cg.cross(e.prop_force_b);
+  e.prop_moment_cg = prop_moment_datum - cg.cross(e.prop_force_body);
 
 }
 
@@ -553,7 +553,7 @@ void AircraftModel::evaluate_aerodynamics(const RigidBodyState& state, Evaluatio
   // 6. Aerodynamics about the aero reference point, moved to the CG. Rates relative to the air
   // mass: the earth-relative body rates minus the turbulence gust rates (Etkin).
   const Eigen::Vector3d& omega_for_aero =
-      options_.aero_rates == AeroRates::kInertial ? state.omega_b_rps : e.omega_wrt_earth_b;
+      options_.aero_rates == AeroRates::kInertial ? state.omega_body_radps : e.omega_wrt_earth_body;
   const Eigen::Vector3d arp_from_cg = pack_.geometry.aero_reference_point_m - cg;
   Aerodynamics::Inputs aero_in;
   aero_in.alpha_rad = e.alpha_rad;
@@ -561,7 +561,7 @@ void AircraftModel::evaluate_aerodynamics(const RigidBodyState& state, Evaluatio
   aero_in.tas_mps = e.tas_mps;
   aero_in.mach = e.mach;
   aero_in.qbar_pa = e.qbar_pa;
-  aero_in.omega_air_b = omega_for_aero - e.gust_rates_b_rps;
+  aero_in.omega_air_body = omega_for_aero - e.gust_rates_body_radps;
   aero_in.alphadot_radps = alpha_dot_radps_;
   aero_in.betadot_radps = beta_dot_radps_;
   aero_in.elevator_rad = s.position(Surface::kElevator);
@@ -575,8 +575,8 @@ void AircraftModel::evaluate_aerodynamics(const RigidBodyState& state, Evaluatio
   e.aero = update_hysteresis
                ? aerodynamics_.evaluate(aero_in)
                : aerodynamics_.compute(aero_in, aerodynamics_.stall_hysteresis_active());
-  e.aero_force_b = e.aero.force_b;
-  e.aero_moment_cg = e.aero.moment_b + arp_from_cg.cross(e.aero.force_b);
+  e.aero_force_body = e.aero.force_body;
+  e.aero_moment_cg = e.aero.moment_body + arp_from_cg.cross(e.aero.force_body);
 
 }
 
@@ -586,11 +586,11 @@ void AircraftModel::evaluate_ground_reactions(Evaluation& e) {
   const Surfaces& s = *surfaces_;
   // 7. Ground reactions on the runway plane.
   LandingGear::contact_kinematics(gear_->params(), Eigen::Vector3d(0.0, 0.0, -e.geodetic.alt_m),
-                                  e.velocity_ned_mps, body_from_ned, e.omega_wrt_earth_b, cg,
+                                  e.velocity_ned_mps, body_from_ned, e.omega_wrt_earth_body, cg,
                                   contact_kinematics_);
   LandingGear::Inputs gear_in;
   gear_in.contacts = contact_kinematics_;
-  gear_in.dcm_ned_to_body = body_from_ned;
+  gear_in.body_from_ned = body_from_ned;
   gear_in.runway_elevation_m = runway_elevation_m_;
   gear_in.steering = controls_.steering;
   gear_in.brake_left = controls_.brake_left;
@@ -599,8 +599,8 @@ void AircraftModel::evaluate_ground_reactions(Evaluation& e) {
   gear_in.min_friction_blend_speed_mps = friction_band_floor_mps_;
   gear_in.max_damping_nspm = contact_damping_ceiling_nspm_;
   gear_->step(0.0, gear_in);
-  e.gear_force_b = gear_->outputs().force_b_n;
-  e.gear_moment_cg = gear_->outputs().moment_datum_b_nm - cg.cross(e.gear_force_b);
+  e.gear_force_body = gear_->outputs().force_body_n;
+  e.gear_moment_cg = gear_->outputs().moment_datum_body_nm - cg.cross(e.gear_force_body);
 
 }
 
@@ -617,7 +617,7 @@ void AircraftModel::advance_systems(double dt_s) {
           Turbulence::Inputs in;
           in.tas_mps = e.tas_mps;
           in.height_agl_m = e.height_agl_m;
-          in.dcm_ned_to_body = e.ned_from_body.transpose();
+          in.body_from_ned = e.ned_from_body.transpose();
           in.mean_wind_ned_mps = e.steady_wind_ned_mps;
           turbulence_->step(dt_s, in);
           gusts_active_ = true;
@@ -685,13 +685,13 @@ void AircraftModel::evaluate_current() {
   // Body-frame rate of change of (u, v, w): the reference-frame acceleration less the
   // rotation of the body axes relative to that frame.
   const Eigen::Matrix3d body_from_ref = e.ref_from_body.transpose();
-  e.velocity_b_mps = body_from_ref * state.velocity_mps;
-  const Eigen::Vector3d omega_rel_b =
-      state.omega_b_rps - body_from_ref * dynamics_.earth().frame_rate_rps();
-  e.velocity_b_dot_mps2 = e.accelerations.acceleration_b_mps2 - omega_rel_b.cross(e.velocity_b_mps);
+  e.velocity_body_mps = body_from_ref * state.velocity_mps;
+  const Eigen::Vector3d omega_rel_body =
+      state.omega_body_radps - body_from_ref * dynamics_.earth().frame_rate_radps();
+  e.velocity_body_dot_mps2 = e.accelerations.acceleration_body_mps2 - omega_rel_body.cross(e.velocity_body_mps);
   // alpha-dot and beta-dot for the next evaluations (JSBSim likewise uses the last frame's):
   // the air-relative velocity changes as the ground-relative one (wind changes neglected).
-  alpha_beta_rates(e.air_velocity_b_mps, e.velocity_b_dot_mps2, alpha_dot_radps_, beta_dot_radps_);
+  alpha_beta_rates(e.air_velocity_body_mps, e.velocity_body_dot_mps2, alpha_dot_radps_, beta_dot_radps_);
   current_valid_ = true;
 }
 
@@ -713,14 +713,14 @@ void AircraftModel::update_contact_inverse_masses() {
   // across-body values is kept.
   const MassBalance::Outputs& mass = mass_->outputs();
   const Eigen::Matrix3d inverse_inertia = mass.inertia_kgm2.inverse();
-  auto inverse_mass = [&](const Eigen::Vector3d& arm_b, int axis) {
+  auto inverse_mass = [&](const Eigen::Vector3d& arm_body, int axis) {
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
-    return 1.0 / mass.mass_kg + (inverse_inertia * arm_b.cross(e)).cross(arm_b).dot(e);
+    return 1.0 / mass.mass_kg + (inverse_inertia * arm_body.cross(e)).cross(arm_body).dot(e);
   };
   for (std::size_t i = 0; i < contact_inverse_mass_horizontal_.size(); ++i) {
-    const Eigen::Vector3d arm_b = pack_.landing_gear.contacts[i].position_m - mass.cg_m;
-    contact_inverse_mass_horizontal_[i] = std::max(inverse_mass(arm_b, 0), inverse_mass(arm_b, 1));
-    contact_inverse_mass_vertical_[i] = inverse_mass(arm_b, 2);
+    const Eigen::Vector3d arm_body = pack_.landing_gear.contacts[i].position_m - mass.cg_m;
+    contact_inverse_mass_horizontal_[i] = std::max(inverse_mass(arm_body, 0), inverse_mass(arm_body, 1));
+    contact_inverse_mass_vertical_[i] = inverse_mass(arm_body, 2);
   }
 }
 

@@ -26,7 +26,7 @@ void AircraftModel::fill_outputs() {
   o.east_m = e.east_m;
 
   o.velocity_ned_mps = e.velocity_ned_mps;
-  o.velocity_b_mps = e.velocity_b_mps;
+  o.velocity_body_mps = e.velocity_body_mps;
   o.ground_speed_mps = std::hypot(e.velocity_ned_mps.x(), e.velocity_ned_mps.y());
   o.climb_rate_mps = -e.velocity_ned_mps.z();
 
@@ -34,17 +34,17 @@ void AircraftModel::fill_outputs() {
   o.euler = euler_from_dcm(e.ned_from_body);
   Eigen::Quaterniond q(e.ned_from_body);
   if (q.w() < 0.0) q.coeffs() *= -1.0;  // scalar part >= 0: one of the two equal quaternions
-  o.q_ned_to_body = to_e0123(q.normalized());
+  o.q_ned_from_body = to_e0123(q.normalized());
 
-  o.omega_b_rps = state.omega_b_rps;
-  o.omega_b_wrt_earth_rps = e.omega_wrt_earth_b;
-  o.omega_dot_b_rps2 = e.accelerations.omega_dot_b_rps2;
-  o.acceleration_b_mps2 = e.accelerations.acceleration_b_mps2;
-  o.velocity_b_dot_mps2 = e.velocity_b_dot_mps2;
-  o.specific_force_cg_b_mps2 = e.accelerations.specific_force_b_mps2;
-  o.specific_force_eye_b_mps2 = RigidBodyDynamics::specific_force_at_b(
-      e.accelerations, state.omega_b_rps, pack_.geometry.pilot_eye_point_m - mass.cg_m);
-  o.load_factor_z = -o.specific_force_cg_b_mps2.z() / units::kStandardGravityMps2;
+  o.omega_body_radps = state.omega_body_radps;
+  o.omega_body_wrt_earth_radps = e.omega_wrt_earth_body;
+  o.omega_dot_body_radps2 = e.accelerations.omega_dot_body_radps2;
+  o.acceleration_body_mps2 = e.accelerations.acceleration_body_mps2;
+  o.velocity_body_dot_mps2 = e.velocity_body_dot_mps2;
+  o.specific_force_cg_body_mps2 = e.accelerations.specific_force_body_mps2;
+  o.specific_force_eye_body_mps2 = RigidBodyDynamics::specific_force_at_body(
+      e.accelerations, state.omega_body_radps, pack_.geometry.pilot_eye_point_m - mass.cg_m);
+  o.load_factor_z = -o.specific_force_cg_body_mps2.z() / units::kStandardGravityMps2;
 
   o.tas_mps = e.tas_mps;
   o.cas_mps = cas_from_tas_mps(e.tas_mps, e.air);
@@ -62,8 +62,8 @@ void AircraftModel::fill_outputs() {
   o.pressure_altitude_m = pressure_altitude_m(e.air.pressure_pa);
   o.wind_ned_mps = e.wind_ned_mps;
   o.gust_ned_mps = e.gust_ned_mps;
-  o.gust_rates_b_rps = e.gust_rates_b_rps;
-  o.air_velocity_b_mps = e.air_velocity_b_mps;
+  o.gust_rates_body_radps = e.gust_rates_body_radps;
+  o.air_velocity_body_mps = e.air_velocity_body_mps;
 
   const Surfaces& s = *surfaces_;
   o.elevator_rad = s.position(Surface::kElevator);
@@ -76,14 +76,14 @@ void AircraftModel::fill_outputs() {
   o.gear_norm = s.retractable_gear ? s.position(Surface::kGear) : 1.0;
 
   o.aero = e.aero;
-  o.aero_force_b_n = e.aero_force_b;
-  o.aero_moment_b_nm = e.aero_moment_cg;
-  o.propulsion_force_b_n = e.prop_force_b;
-  o.propulsion_moment_b_nm = e.prop_moment_cg;
-  o.gear_force_b_n = e.gear_force_b;
-  o.gear_moment_b_nm = e.gear_moment_cg;
-  o.total_force_b_n = e.wrench.force_b_n;
-  o.total_moment_b_nm = e.wrench.moment_b_nm;
+  o.aero_force_body_n = e.aero_force_body;
+  o.aero_moment_body_nm = e.aero_moment_cg;
+  o.propulsion_force_body_n = e.prop_force_body;
+  o.propulsion_moment_body_nm = e.prop_moment_cg;
+  o.gear_force_body_n = e.gear_force_body;
+  o.gear_moment_body_nm = e.gear_moment_cg;
+  o.total_force_body_n = e.wrench.force_body_n;
+  o.total_moment_body_nm = e.wrench.moment_body_nm;
   o.stalled = aerodynamics_.stall_hysteresis_active();
 
   o.mass_kg = mass.mass_kg;
@@ -143,7 +143,7 @@ void AircraftModel::fill_contact_outputs() {
     out.compression_m = c.compression_m;
     out.compression_rate_mps = c.compression_rate_mps;
     out.normal_force_n = c.normal_force_n;
-    out.force_b_n = c.force_b_n;
+    out.force_body_n = c.force_body_n;
     o.any_contact = o.any_contact || out.weight_on_wheels;
     o.gear_normal_force_n += c.normal_force_n;
   }

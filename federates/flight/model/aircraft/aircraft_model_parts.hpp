@@ -64,7 +64,7 @@ struct AircraftModel::Evaluation {
   Eigen::Matrix3d ref_from_body = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d ned_from_body = Eigen::Matrix3d::Identity();
   Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d omega_wrt_earth_b = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_wrt_earth_body = Eigen::Vector3d::Zero();
   double height_agl_m = 0.0;
   double north_m = 0.0, east_m = 0.0;
   // 1 atmosphere.
@@ -72,21 +72,21 @@ struct AircraftModel::Evaluation {
   // 2 weather.
   Eigen::Vector3d steady_wind_ned_mps = Eigen::Vector3d::Zero();
   Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_rates_body_radps = Eigen::Vector3d::Zero();
   Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();
   // 4 air data.
-  Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d air_velocity_body_mps = Eigen::Vector3d::Zero();
   double tas_mps = 0.0, alpha_rad = 0.0, beta_rad = 0.0, mach = 0.0, qbar_pa = 0.0;
   // 5-7 forces (body axes) and moments about the CG.
   Aerodynamics::Outputs aero;
-  Eigen::Vector3d aero_force_b = Eigen::Vector3d::Zero(), aero_moment_cg = Eigen::Vector3d::Zero();
-  Eigen::Vector3d prop_force_b = Eigen::Vector3d::Zero(), prop_moment_cg = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gear_force_b = Eigen::Vector3d::Zero(), gear_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d aero_force_body = Eigen::Vector3d::Zero(), aero_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d prop_force_body = Eigen::Vector3d::Zero(), prop_moment_cg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gear_force_body = Eigen::Vector3d::Zero(), gear_moment_cg = Eigen::Vector3d::Zero();
   Wrench wrench;
   // Accelerations (current evaluation only).
   RigidBodyAccelerations accelerations;
-  Eigen::Vector3d velocity_b_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d velocity_b_dot_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_body_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_body_dot_mps2 = Eigen::Vector3d::Zero();
 };
 
 }  // namespace fedsim::flight

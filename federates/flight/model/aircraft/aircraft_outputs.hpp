@@ -43,7 +43,7 @@ struct ContactOutputs {
   double compression_m = 0.0;
   double compression_rate_mps = 0.0;
   double normal_force_n = 0.0;
-  Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
 };
 
 /// The state of the aircraft after a step. Frames and units as DESIGN.md; "earth-relative"
@@ -61,27 +61,27 @@ struct AircraftOutputs {
 
   // Velocity.
   Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();  ///< over the ground
-  Eigen::Vector3d velocity_b_mps = Eigen::Vector3d::Zero();    ///< u, v, w over the ground
+  Eigen::Vector3d velocity_body_mps = Eigen::Vector3d::Zero();    ///< u, v, w over the ground
   double ground_speed_mps = 0.0;
   double climb_rate_mps = 0.0;  ///< -v_down
 
   // Attitude.
-  /// Body attitude relative to NED, scalar first: v_ned = q v_b q* (seed eqs 3.54-3.57).
-  Eigen::Vector4d q_ned_to_body = Eigen::Vector4d(1.0, 0.0, 0.0, 0.0);
+  /// Body attitude relative to NED, scalar first: v_ned = q v_body q* (seed eqs 3.54-3.57).
+  Eigen::Vector4d q_ned_from_body = Eigen::Vector4d(1.0, 0.0, 0.0, 0.0);
   EulerAngles euler;
   Eigen::Matrix3d ned_from_body = Eigen::Matrix3d::Identity();
 
   // Rates and accelerations (body axes).
-  Eigen::Vector3d omega_b_rps = Eigen::Vector3d::Zero();            ///< wrt inertial space
-  Eigen::Vector3d omega_b_wrt_earth_rps = Eigen::Vector3d::Zero();  ///< wrt the earth
-  Eigen::Vector3d omega_dot_b_rps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();            ///< wrt inertial space
+  Eigen::Vector3d omega_body_wrt_earth_radps = Eigen::Vector3d::Zero();  ///< wrt the earth
+  Eigen::Vector3d omega_dot_body_radps2 = Eigen::Vector3d::Zero();
   /// Rate of change of the earth-relative velocity (reference frame), body axes: what
-  /// idl/aircraft_state.idl calls accel_body_mps2.
-  Eigen::Vector3d acceleration_b_mps2 = Eigen::Vector3d::Zero();
+  /// idl/aircraft_state.idl calls acceleration_body_mps2.
+  Eigen::Vector3d acceleration_body_mps2 = Eigen::Vector3d::Zero();
   /// d/dt of (u, v, w) seen in the body frame (zero in any steady flight, turns included).
-  Eigen::Vector3d velocity_b_dot_mps2 = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_cg_b_mps2 = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_eye_b_mps2 = Eigen::Vector3d::Zero();  ///< pilot eye point
+  Eigen::Vector3d velocity_body_dot_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d specific_force_cg_body_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d specific_force_eye_body_mps2 = Eigen::Vector3d::Zero();  ///< pilot eye point
   double load_factor_z = 0.0;  ///< n_z = -f_z / g0 at the CG (1 in level flight)
 
   // Air data.
@@ -94,8 +94,8 @@ struct AircraftOutputs {
   double pressure_altitude_m = 0.0;
   Eigen::Vector3d wind_ned_mps = Eigen::Vector3d::Zero();      ///< total: steady + shear + gust
   Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();      ///< turbulence part of the wind
-  Eigen::Vector3d gust_rates_b_rps = Eigen::Vector3d::Zero();  ///< p_g, q_g, r_g (Etkin)
-  Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gust_rates_body_radps = Eigen::Vector3d::Zero();  ///< p_g, q_g, r_g (Etkin)
+  Eigen::Vector3d air_velocity_body_mps = Eigen::Vector3d::Zero();
 
   // Surfaces as positioned by the actuators (signs: data/aircraft/README.md).
   double elevator_rad = 0.0;  ///< trailing edge down +
@@ -108,15 +108,15 @@ struct AircraftOutputs {
   double gear_norm = 0.0;  ///< 0 up, 1 down and locked
 
   // Forces and moments (body axes; moments about the CG; gravity excluded).
-  Aerodynamics::Outputs aero;  ///< coefficients; its moment_b is about the aero RP
-  Eigen::Vector3d aero_force_b_n = Eigen::Vector3d::Zero();
-  Eigen::Vector3d aero_moment_b_nm = Eigen::Vector3d::Zero();
-  Eigen::Vector3d propulsion_force_b_n = Eigen::Vector3d::Zero();
-  Eigen::Vector3d propulsion_moment_b_nm = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gear_force_b_n = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gear_moment_b_nm = Eigen::Vector3d::Zero();
-  Eigen::Vector3d total_force_b_n = Eigen::Vector3d::Zero();
-  Eigen::Vector3d total_moment_b_nm = Eigen::Vector3d::Zero();
+  Aerodynamics::Outputs aero;  ///< coefficients; its moment_body is about the aero RP
+  Eigen::Vector3d aero_force_body_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d aero_moment_body_nm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d propulsion_force_body_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d propulsion_moment_body_nm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gear_force_body_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gear_moment_body_nm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d total_force_body_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d total_moment_body_nm = Eigen::Vector3d::Zero();
   bool stalled = false;  ///< stall hysteresis flag
 
   // Mass.

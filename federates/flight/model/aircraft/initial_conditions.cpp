@@ -177,7 +177,7 @@ InitialConditionFile read_file(const ConfigNode& root) {
   if (root.has("attitude_deg")) ic.attitude = read_attitude(root.child("attitude_deg"));
   if (root.has("body_rates_dps")) {
     const std::vector<double> w = root.numbers("body_rates_dps", 3);
-    ic.omega_b_rps = Eigen::Vector3d(w[0], w[1], w[2]) * units::kDegToRad;
+    ic.omega_body_radps = Eigen::Vector3d(w[0], w[1], w[2]) * units::kDegToRad;
   }
   ic.omega_relative_to_earth =
       root.choice_or("body_rates_relative_to", {"earth", "inertial"}, "earth") == "earth";
@@ -211,7 +211,7 @@ void AircraftInitialConditions::validate() const {
     throw std::invalid_argument("initial conditions: longitude and altitude must be finite");
   }
   require_finite(velocity_mps, "velocity_mps");
-  require_finite(omega_b_rps, "omega_b_rps");
+  require_finite(omega_body_radps, "omega_body_radps");
   if (!std::isfinite(attitude.phi_rad) || !std::isfinite(attitude.theta_rad) ||
       !std::isfinite(attitude.psi_rad)) {
     throw std::invalid_argument("initial conditions: Euler angles must be finite");

@@ -31,8 +31,8 @@ struct AircraftInitialConditions {
   /// Body attitude relative to local NED (3-2-1 Euler angles, psi true heading).
   EulerAngles attitude;
   /// Body rates p, q, r (rad/s, body axes).
-  Eigen::Vector3d omega_b_rps = Eigen::Vector3d::Zero();
-  /// true: omega_b_rps is relative to the earth (the model adds the earth's rate on the
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();
+  /// true: omega_body_radps is relative to the earth (the model adds the earth's rate on the
   /// rotating earth); false: relative to inertial space. Identical on the flat earth.
   bool omega_relative_to_earth = true;
   /// Engines running (ignition and fuel on) or shut down.

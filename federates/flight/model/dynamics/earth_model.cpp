@@ -41,7 +41,7 @@ Eigen::Vector3d EarthModel::free_fall_acceleration(const Eigen::Vector3d& positi
          w.cross(w.cross(position_m));
 }
 
-Eigen::Vector3d EarthModel::frame_rate_rps() const {
+Eigen::Vector3d EarthModel::frame_rate_radps() const {
   if (config_.kind == EarthModelKind::kFlat) return Eigen::Vector3d::Zero();
   return Wgs84::earth_rate_ecef();
 }

@@ -42,7 +42,7 @@ class EarthModel {
   /// Gravitational attraction alone (no rotation terms), reference axes.
   Eigen::Vector3d gravitation(const Eigen::Vector3d& position_m) const;
   /// Angular velocity of the reference frame relative to inertial space, reference axes.
-  Eigen::Vector3d frame_rate_rps() const;
+  Eigen::Vector3d frame_rate_radps() const;
 
   /// Geodetic position of a reference-frame position. On the flat earth the height is -down and
   /// lat/lon follow from north/east through the radii of curvature at the origin (seed eqs

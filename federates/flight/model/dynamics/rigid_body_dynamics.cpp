@@ -17,13 +17,13 @@ void RigidBodyDynamics::set_mass_properties(const MassProperties& mass) {
   inverse_inertia_ = mass_.inertia_kgm2.inverse();
 }
 
-Eigen::Vector3d RigidBodyDynamics::angular_acceleration(const Eigen::Vector3d& omega_b,
+Eigen::Vector3d RigidBodyDynamics::angular_acceleration(const Eigen::Vector3d& omega_body,
                                                         const Wrench& wrench) const {
   // Euler's equation with the full tensor and rotor momentum: the vector form of eqs
   // 3.104-3.106 plus the gyroscopic terms of 3.110-3.112 (omega x h: q hz - r hy,
   // r hx - p hz, p hy - q hx; the book's printed 3.111-3.112 swap two subscripts).
-  const Eigen::Vector3d momentum = mass_.inertia_kgm2 * omega_b + wrench.rotor_momentum_b_kgm2ps;
-  return inverse_inertia_ * (wrench.moment_b_nm - omega_b.cross(momentum));
+  const Eigen::Vector3d momentum = mass_.inertia_kgm2 * omega_body + wrench.rotor_momentum_body_kgm2ps;
+  return inverse_inertia_ * (wrench.moment_body_nm - omega_body.cross(momentum));
 }
 
 RigidBodyDynamics::StateVector RigidBodyDynamics::derivative(const StateVector& x,
@@ -32,19 +32,19 @@ RigidBodyDynamics::StateVector RigidBodyDynamics::derivative(const StateVector& 
   const Eigen::Vector3d position = x.segment<3>(0);
   const Eigen::Vector3d velocity = x.segment<3>(3);
   const Eigen::Vector4d quaternion = x.segment<4>(6);
-  const Eigen::Vector3d omega_b = x.segment<3>(10);
+  const Eigen::Vector3d omega_body = x.segment<3>(10);
   const Eigen::Matrix3d ref_from_body = dcm_from_quaternion(from_e0123(quaternion));
 
   StateVector dx;
   dx.segment<3>(0) = velocity;
-  dx.segment<3>(3) = ref_from_body * (wrench.force_b_n / mass_.mass_kg) +
+  dx.segment<3>(3) = ref_from_body * (wrench.force_body_n / mass_.mass_kg) +
                      earth_.free_fall_acceleration(position, velocity);
   // Attitude is relative to the reference frame, which itself turns at W (zero if flat).
-  const Eigen::Vector3d omega_relative_b =
-      omega_b - ref_from_body.transpose() * earth_.frame_rate_rps();
-  dx.segment<4>(6) = quaternion_rate(quaternion, omega_relative_b, 0.0) +
+  const Eigen::Vector3d omega_relative_body =
+      omega_body - ref_from_body.transpose() * earth_.frame_rate_radps();
+  dx.segment<4>(6) = quaternion_rate(quaternion, omega_relative_body, 0.0) +
                      quaternion_correction_per_s * quaternion;
-  dx.segment<3>(10) = angular_acceleration(omega_b, wrench);
+  dx.segment<3>(10) = angular_acceleration(omega_body, wrench);
   return dx;
 }
 
@@ -55,7 +55,7 @@ double RigidBodyDynamics::quaternion_correction_per_s(const StateVector& x, doub
 
 RigidBodyDynamics::StateVector RigidBodyDynamics::pack(const RigidBodyState& state) {
   StateVector x;
-  x << state.position_m, state.velocity_mps, to_e0123(state.attitude), state.omega_b_rps;
+  x << state.position_m, state.velocity_mps, to_e0123(state.attitude), state.omega_body_radps;
   return x;
 }
 
@@ -64,7 +64,7 @@ RigidBodyState RigidBodyDynamics::unpack(const StateVector& x) {
   state.position_m = x.segment<3>(0);
   state.velocity_mps = x.segment<3>(3);
   state.attitude = from_e0123(x.segment<4>(6));
-  state.omega_b_rps = x.segment<3>(10);
+  state.omega_body_radps = x.segment<3>(10);
   return state;
 }
 
@@ -75,9 +75,9 @@ RigidBodyState RigidBodyDynamics::initial_state(const InitialConditions& initial
   state.velocity_mps = ned_from_ref.transpose() * initial.velocity_ned_mps;
   const Eigen::Matrix3d ref_from_body = ned_from_ref.transpose() * dcm_from_euler(initial.attitude);
   state.attitude = Eigen::Quaterniond(ref_from_body).normalized();
-  state.omega_b_rps = initial.omega_b_rps;
+  state.omega_body_radps = initial.omega_body_radps;
   if (initial.omega_relative_to_earth) {
-    state.omega_b_rps += ref_from_body.transpose() * earth_.frame_rate_rps();
+    state.omega_body_radps += ref_from_body.transpose() * earth_.frame_rate_radps();
   }
   return state;
 }
@@ -90,11 +90,11 @@ RigidBodyOutputs RigidBodyDynamics::outputs(const RigidBodyState& state) const {
   const Eigen::Matrix3d ref_from_body = dcm_from_quaternion(state.attitude);
   out.ned_from_body = ned_from_ref * ref_from_body;
   out.velocity_ned_mps = ned_from_ref * state.velocity_mps;
-  out.velocity_b_mps = ref_from_body.transpose() * state.velocity_mps;
+  out.velocity_body_mps = ref_from_body.transpose() * state.velocity_mps;
   out.euler = euler_from_dcm(out.ned_from_body);
-  out.omega_b_rps = state.omega_b_rps;
-  out.omega_b_wrt_earth_rps =
-      state.omega_b_rps - ref_from_body.transpose() * earth_.frame_rate_rps();
+  out.omega_body_radps = state.omega_body_radps;
+  out.omega_body_wrt_earth_radps =
+      state.omega_body_radps - ref_from_body.transpose() * earth_.frame_rate_radps();
   out.gravitation_ned_mps2 = ned_from_ref * earth_.gravitation(state.position_m);
   return out;
 }
@@ -103,21 +103,21 @@ RigidBodyAccelerations RigidBodyDynamics::accelerations(const RigidBodyState& st
                                                         const Wrench& wrench) const {
   RigidBodyAccelerations acc;
   const Eigen::Matrix3d ref_from_body = dcm_from_quaternion(state.attitude);
-  acc.specific_force_b_mps2 = wrench.force_b_n / mass_.mass_kg;
-  acc.acceleration_b_mps2 =
-      acc.specific_force_b_mps2 +
+  acc.specific_force_body_mps2 = wrench.force_body_n / mass_.mass_kg;
+  acc.acceleration_body_mps2 =
+      acc.specific_force_body_mps2 +
       ref_from_body.transpose() *
           earth_.free_fall_acceleration(state.position_m, state.velocity_mps);
-  acc.omega_dot_b_rps2 = angular_acceleration(state.omega_b_rps, wrench);
+  acc.omega_dot_body_radps2 = angular_acceleration(state.omega_body_radps, wrench);
   return acc;
 }
 
-Eigen::Vector3d RigidBodyDynamics::specific_force_at_b(const RigidBodyAccelerations& accelerations,
-                                                       const Eigen::Vector3d& omega_b_rps,
-                                                       const Eigen::Vector3d& point_from_cg_b_m) {
-  return accelerations.specific_force_b_mps2 +
-         accelerations.omega_dot_b_rps2.cross(point_from_cg_b_m) +
-         omega_b_rps.cross(omega_b_rps.cross(point_from_cg_b_m));
+Eigen::Vector3d RigidBodyDynamics::specific_force_at_body(const RigidBodyAccelerations& accelerations,
+                                                       const Eigen::Vector3d& omega_body_radps,
+                                                       const Eigen::Vector3d& point_from_cg_body_m) {
+  return accelerations.specific_force_body_mps2 +
+         accelerations.omega_dot_body_radps2.cross(point_from_cg_body_m) +
+         omega_body_radps.cross(omega_body_radps.cross(point_from_cg_body_m));
 }
 
 double RigidBodyDynamics::stable_quaternion_constraint_kh(IntegrationMethod method) {

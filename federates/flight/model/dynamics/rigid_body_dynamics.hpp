@@ -16,8 +16,8 @@ struct InitialConditions {
   GeodeticPosition position;                                    // flat earth: about its origin
   Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();   // relative to the earth
   EulerAngles attitude;                                         // body relative to local NED
-  Eigen::Vector3d omega_b_rps = Eigen::Vector3d::Zero();        // body rates, body axes
-  bool omega_relative_to_earth = false;  // true: omega_b_rps is relative to the (rotating)
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();        // body rates, body axes
+  bool omega_relative_to_earth = false;  // true: omega_body_radps is relative to the (rotating)
                                          // earth; the earth's rate is added to it
 };
 
@@ -26,28 +26,28 @@ struct RigidBodyOutputs {
   GeodeticPosition geodetic;                        // lat, lon, height above the ellipsoid
   Eigen::Vector3d position_ecef_m;
   Eigen::Vector3d velocity_ned_mps;                 // relative to the earth
-  Eigen::Vector3d velocity_b_mps;                   // u, v, w relative to the earth
+  Eigen::Vector3d velocity_body_mps;                   // u, v, w relative to the earth
   EulerAngles euler;                                // phi, theta, psi relative to local NED
   Eigen::Matrix3d ned_from_body;
-  Eigen::Vector3d omega_b_rps;                      // p, q, r relative to inertial space
-  Eigen::Vector3d omega_b_wrt_earth_rps;            // p, q, r relative to the earth
+  Eigen::Vector3d omega_body_radps;                      // p, q, r relative to inertial space
+  Eigen::Vector3d omega_body_wrt_earth_radps;            // p, q, r relative to the earth
   Eigen::Vector3d gravitation_ned_mps2;             // gravitational attraction, local NED
 };
 
 /// Accelerations of a state under a wrench.
 struct RigidBodyAccelerations {
-  Eigen::Vector3d specific_force_b_mps2;  // non-gravitational force / mass: what an
+  Eigen::Vector3d specific_force_body_mps2;  // non-gravitational force / mass: what an
                                           // accelerometer at the CG reads (n_z = -f_z / g)
-  Eigen::Vector3d acceleration_b_mps2;    // rate of change of the earth-relative velocity
+  Eigen::Vector3d acceleration_body_mps2;    // rate of change of the earth-relative velocity
                                           // (reference frame), body axes
-  Eigen::Vector3d omega_dot_b_rps2;       // angular acceleration, body axes
+  Eigen::Vector3d omega_dot_body_radps2;       // angular acceleration, body axes
 };
 
 /// The equations. State vector layout (13 doubles): position (3), velocity (3), attitude
-/// quaternion e0..e3 (4), omega_b (3), all as in RigidBodyState.
+/// quaternion e0..e3 (4), omega_body (3), all as in RigidBodyState.
 ///   r'     = v
-///   v'     = C_ref_b F / m + free-fall acceleration (gravity [- 2 W x v - W x (W x r)])
-///   q'     = 1/2 q (x) (omega_b - C_b_ref W) + k lambda q                 (eqs 3.59-3.70)
+///   v'     = C_ref_body F / m + free-fall acceleration (gravity [- 2 W x v - W x (W x r)])
+///   q'     = 1/2 q (x) (omega_body - C_body_ref W) + k lambda q                 (eqs 3.59-3.70)
 ///   omega' = J^-1 (M - omega x (J omega + h_rotor))                      (eqs 3.104-3.112)
 /// The flat-earth translational equation is the book's body-axis eqs 3.101-3.103 written in the
 /// NED frame, where the transport terms (r v - q w, ...) vanish. The inertia may change between
@@ -90,12 +90,12 @@ class RigidBodyDynamics {
 
   /// Specific force at a point fixed in the body (e.g. the pilot's eye), body axes, given the
   /// CG specific force and the body's angular motion: f_P = f_cg + w' x r + w x (w x r).
-  static Eigen::Vector3d specific_force_at_b(const RigidBodyAccelerations& accelerations,
-                                             const Eigen::Vector3d& omega_b_rps,
-                                             const Eigen::Vector3d& point_from_cg_b_m);
+  static Eigen::Vector3d specific_force_at_body(const RigidBodyAccelerations& accelerations,
+                                             const Eigen::Vector3d& omega_body_radps,
+                                             const Eigen::Vector3d& point_from_cg_body_m);
 
  private:
-  Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& omega_b,
+  Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& omega_body,
                                        const Wrench& wrench) const;
 
   EarthModel earth_;

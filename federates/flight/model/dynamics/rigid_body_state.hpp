@@ -15,17 +15,17 @@ struct RigidBodyState {
   Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();  // CG velocity relative to the earth,
                                                            // reference-frame axes
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> reference frame:
-                                                                 // v_ref = attitude * v_b
-  Eigen::Vector3d omega_b_rps = Eigen::Vector3d::Zero();  // body rate relative to inertial space
+                                                                 // v_ref = attitude * v_body
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();  // body rate relative to inertial space
 };
 
 /// Forces and moments on the body, body axes, about the CG, gravity excluded (the earth model
 /// adds it). The angular momentum of spinning rotors (engines, propellers) is optional; it adds
 /// the gyroscopic moment -omega x h_rotor (seed eqs 3.110-3.112).
 struct Wrench {
-  Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
-  Eigen::Vector3d moment_b_nm = Eigen::Vector3d::Zero();
-  Eigen::Vector3d rotor_momentum_b_kgm2ps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d moment_body_nm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotor_momentum_body_kgm2ps = Eigen::Vector3d::Zero();
 };
 
 }  // namespace fedsim::flight

@@ -129,9 +129,9 @@ class TrimProblem {
   /// Every residual at the model's present state (TrimAxis order, SI).
   std::array<double, kTrimAxisCount> all_residuals() const {
     const AircraftOutputs& o = model_.outputs();
-    return {o.velocity_b_dot_mps2.x(),     o.velocity_b_dot_mps2.y(), o.velocity_b_dot_mps2.z(),
-            o.omega_dot_b_rps2.x(),        o.omega_dot_b_rps2.y(),    o.omega_dot_b_rps2.z(),
-            o.specific_force_cg_b_mps2.y()};
+    return {o.velocity_body_dot_mps2.x(),     o.velocity_body_dot_mps2.y(), o.velocity_body_dot_mps2.z(),
+            o.omega_dot_body_radps2.x(),        o.omega_dot_body_radps2.y(),    o.omega_dot_body_radps2.z(),
+            o.specific_force_cg_body_mps2.y()};
   }
 
   /// The trim's equations at z, each divided by its tolerance (|r_i| <= 1: met).
@@ -226,11 +226,11 @@ class TrimProblem {
     const double theta = pitch_for_flight_path(alpha, beta, phi, flight_path());
     const EulerAngles attitude{phi, theta, request_.heading_rad};
     const Eigen::Matrix3d ned_from_body = dcm_from_euler(attitude);
-    const Eigen::Vector3d air_b =
+    const Eigen::Vector3d air_body =
         tas_mps_ * Eigen::Vector3d(std::cos(alpha) * std::cos(beta), std::sin(beta),
                                    std::sin(alpha) * std::cos(beta));
     const Eigen::Vector3d velocity_ned =
-        ned_from_body * air_b + wind_.at(request_.position.alt_m).wind_ned_mps;
+        ned_from_body * air_body + wind_.at(request_.position.alt_m).wind_ned_mps;
 
     // Body rates: the turn about the local vertical, plus on the WGS-84 earth the rotation of
     // the local NED axes over the curved earth (the model adds the earth's own rate).
@@ -244,7 +244,7 @@ class TrimProblem {
     ic.velocity_frame = AircraftInitialConditions::VelocityFrame::kNed;
     ic.velocity_mps = velocity_ned;
     ic.attitude = attitude;
-    ic.omega_b_rps = ned_from_body.transpose() * frame_rate_ned;
+    ic.omega_body_radps = ned_from_body.transpose() * frame_rate_ned;
     ic.omega_relative_to_earth = true;
     place(ic, theta, phi);
   }
@@ -503,9 +503,9 @@ std::string_view trim_axis_name(int axis) {
   static constexpr std::string_view kNames[kTrimAxisCount] = {"u_dot_mps2",
                                                               "v_dot_mps2",
                                                               "w_dot_mps2",
-                                                              "p_dot_rps2",
-                                                              "q_dot_rps2",
-                                                              "r_dot_rps2",
+                                                              "p_dot_radps2",
+                                                              "q_dot_radps2",
+                                                              "r_dot_radps2",
                                                               "lateral_specific_force_mps2"};
   return axis >= 0 && axis < kTrimAxisCount ? kNames[axis] : "unknown";
 }

@@ -30,9 +30,9 @@ struct GroundAxes {
   Eigen::Vector3d right;
 };
 
-GroundAxes wheel_ground_axes(const Eigen::Matrix3d& dcm_ned_to_body, double steer_rad) {
-  const Eigen::Vector3d heading_b(std::cos(steer_rad), std::sin(steer_rad), 0.0);
-  const Eigen::Vector3d heading_ned = dcm_ned_to_body.transpose() * heading_b;
+GroundAxes wheel_ground_axes(const Eigen::Matrix3d& body_from_ned, double steer_rad) {
+  const Eigen::Vector3d heading_body(std::cos(steer_rad), std::sin(steer_rad), 0.0);
+  const Eigen::Vector3d heading_ned = body_from_ned.transpose() * heading_body;
   Eigen::Vector3d along(heading_ned.x(), heading_ned.y(), 0.0);
   const double n = along.norm();
   // A wheel pointing straight up or down has no ground heading; pick north (no rolling
@@ -69,8 +69,8 @@ LandingGear::LandingGear(Params params) : params_((params.validate(), std::move(
 }
 
 void LandingGear::reset() {
-  outputs_.force_b_n.setZero();
-  outputs_.moment_datum_b_nm.setZero();
+  outputs_.force_body_n.setZero();
+  outputs_.moment_datum_body_nm.setZero();
   outputs_.weight_on_wheels = false;
   std::fill(outputs_.contacts.begin(), outputs_.contacts.end(), ContactOutput{});
 }
@@ -82,18 +82,18 @@ double LandingGear::damping_ratio(double spring_npm, double damping_nspm,
 
 void LandingGear::contact_kinematics(const Params& params, const Eigen::Vector3d& cg_ned_m,
                                      const Eigen::Vector3d& cg_velocity_ned_mps,
-                                     const Eigen::Matrix3d& dcm_ned_to_body,
-                                     const Eigen::Vector3d& omega_b_radps,
+                                     const Eigen::Matrix3d& body_from_ned,
+                                     const Eigen::Vector3d& omega_body_radps,
                                      const Eigen::Vector3d& cg_m,
                                      std::span<ContactKinematics> out) {
   if (out.size() != params.contacts.size()) {
     throw std::invalid_argument("LandingGear::contact_kinematics: output size mismatch");
   }
-  const Eigen::Matrix3d body_to_ned = dcm_ned_to_body.transpose();
+  const Eigen::Matrix3d ned_from_body = body_from_ned.transpose();
   for (std::size_t i = 0; i < out.size(); ++i) {
-    const Eigen::Vector3d arm_b = params.contacts[i].position_m - cg_m;
-    out[i].position_ned_m = cg_ned_m + body_to_ned * arm_b;
-    out[i].velocity_ned_mps = cg_velocity_ned_mps + body_to_ned * omega_b_radps.cross(arm_b);
+    const Eigen::Vector3d arm_body = params.contacts[i].position_m - cg_m;
+    out[i].position_ned_m = cg_ned_m + ned_from_body * arm_body;
+    out[i].velocity_ned_mps = cg_velocity_ned_mps + ned_from_body * omega_body_radps.cross(arm_body);
   }
 }
 
@@ -118,10 +118,10 @@ double LandingGear::blend_speed_mps(const Inputs& in) const {
 
 Eigen::Vector3d LandingGear::wheel_friction_ned(const Contact& contact,
                                                 const Eigen::Vector3d& velocity_ned,
-                                                const Eigen::Matrix3d& dcm_ned_to_body,
+                                                const Eigen::Matrix3d& body_from_ned,
                                                 double steer_rad, double brake, double normal_n,
                                                 double band_mps) const {
-  const GroundAxes axes = wheel_ground_axes(dcm_ned_to_body, steer_rad);
+  const GroundAxes axes = wheel_ground_axes(body_from_ned, steer_rad);
   const double v_roll = velocity_ned.dot(axes.along);
   const double v_side = velocity_ned.dot(axes.right);
 
@@ -175,7 +175,7 @@ LandingGear::ContactOutput LandingGear::evaluate_contact(std::size_t index,
 
   const double band = blend_speed_mps(in);
   Eigen::Vector3d friction_ned =
-      wheel ? wheel_friction_ned(contact, kin.velocity_ned_mps, in.dcm_ned_to_body,
+      wheel ? wheel_friction_ned(contact, kin.velocity_ned_mps, in.body_from_ned,
                                  out.steer_angle_rad, brake_for(contact, in), out.normal_force_n,
                                  band)
             : sliding_friction_ned(contact, kin.velocity_ned_mps, out.normal_force_n, band);
@@ -183,7 +183,7 @@ LandingGear::ContactOutput LandingGear::evaluate_contact(std::size_t index,
   const double magnitude = friction_ned.norm();
   if (magnitude > limit) friction_ned *= limit / magnitude;  // friction circle
 
-  out.force_b_n = in.dcm_ned_to_body * (out.normal_force_n * kUpNed + friction_ned);
+  out.force_body_n = in.body_from_ned * (out.normal_force_n * kUpNed + friction_ned);
   return out;
 }
 
@@ -194,8 +194,8 @@ void LandingGear::step(double /*dt_s*/, const Inputs& in) {
                                 " contacts");
   }
   Outputs& out = outputs_;
-  out.force_b_n.setZero();
-  out.moment_datum_b_nm.setZero();
+  out.force_body_n.setZero();
+  out.moment_datum_body_nm.setZero();
   out.weight_on_wheels = false;
   for (std::size_t i = 0; i < params_.contacts.size(); ++i) {
     const Contact& contact = params_.contacts[i];
@@ -204,10 +204,10 @@ void LandingGear::step(double /*dt_s*/, const Inputs& in) {
     if (!c.in_contact) continue;
     // The force acts where the tyre meets the ground: the undeflected point moved up by the
     // compression along the ground normal.
-    const Eigen::Vector3d ground_point_b =
-        contact.position_m + in.dcm_ned_to_body * (c.compression_m * kUpNed);
-    out.force_b_n += c.force_b_n;
-    out.moment_datum_b_nm += ground_point_b.cross(c.force_b_n);
+    const Eigen::Vector3d ground_point_body =
+        contact.position_m + in.body_from_ned * (c.compression_m * kUpNed);
+    out.force_body_n += c.force_body_n;
+    out.moment_datum_body_nm += ground_point_body.cross(c.force_body_n);
     if (contact.type == ContactType::kWheel) out.weight_on_wheels = true;
   }
 }

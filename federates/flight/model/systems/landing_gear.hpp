@@ -19,7 +19,7 @@ namespace fedsim::flight {
 ///          the NED-to-body direction cosine matrix, the runway elevation (the ground is the
 ///          level plane at that altitude, normal up), nose-wheel steering (-1..1, + = nose
 ///          right), left / right brakes (0..1), gear lever (down / up).
-/// Outputs: total force_b_n (body axes) and moment_datum_b_nm (about the pack datum, body
+/// Outputs: total force_body_n (body axes) and moment_datum_body_nm (about the pack datum, body
 ///          axes), weight-on-wheels, and per contact its compression, normal force and force.
 ///
 /// Per contact (a wheel, or a structural point such as a tail skid or a wing tip):
@@ -91,7 +91,7 @@ class LandingGear {
 
   struct Inputs {
     std::span<const ContactKinematics> contacts;  ///< one per Params::contacts, same order
-    Eigen::Matrix3d dcm_ned_to_body = Eigen::Matrix3d::Identity();  ///< v_b = C v_ned
+    Eigen::Matrix3d body_from_ned = Eigen::Matrix3d::Identity();  ///< v_body = C v_ned
     double runway_elevation_m = 0.0;
     double steering = 0.0;     ///< -1..1, + = nose right
     double brake_left = 0.0;   ///< 0..1
@@ -111,12 +111,12 @@ class LandingGear {
     double compression_rate_mps = 0.0;
     double normal_force_n = 0.0;
     double steer_angle_rad = 0.0;
-    Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
   };
 
   struct Outputs {
-    Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
-    Eigen::Vector3d moment_datum_b_nm = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d moment_datum_body_nm = Eigen::Vector3d::Zero();
     bool weight_on_wheels = false;        ///< any wheel (not structure) in contact
     std::vector<ContactOutput> contacts;  ///< sized at construction
   };
@@ -137,8 +137,8 @@ class LandingGear {
   /// Writes one entry per contact into `out` (size must match; no allocation).
   static void contact_kinematics(const Params& params, const Eigen::Vector3d& cg_ned_m,
                                  const Eigen::Vector3d& cg_velocity_ned_mps,
-                                 const Eigen::Matrix3d& dcm_ned_to_body,
-                                 const Eigen::Vector3d& omega_b_radps, const Eigen::Vector3d& cg_m,
+                                 const Eigen::Matrix3d& body_from_ned,
+                                 const Eigen::Vector3d& omega_body_radps, const Eigen::Vector3d& cg_m,
                                  std::span<ContactKinematics> out);
 
   /// c / (2 sqrt(k m)) for a strut of stiffness k carrying mass m.
@@ -148,7 +148,7 @@ class LandingGear {
   ContactOutput evaluate_contact(std::size_t index, const ContactKinematics& kin,
                                  const Inputs& in) const;
   Eigen::Vector3d wheel_friction_ned(const Contact& contact, const Eigen::Vector3d& velocity_ned,
-                                     const Eigen::Matrix3d& dcm_ned_to_body, double steer_rad,
+                                     const Eigen::Matrix3d& body_from_ned, double steer_rad,
                                      double brake, double normal_n, double band_mps) const;
   Eigen::Vector3d sliding_friction_ned(const Contact& contact, const Eigen::Vector3d& velocity_ned,
                                        double normal_n, double band_mps) const;

@@ -44,7 +44,7 @@ PistonPowerplant::PistonPowerplant(Params params)
       engine_(params_.engine),
       propeller_(params_.propeller),
       governor_(params_.governor),
-      axis_b_(params_.thrust_line.axis_b()) {
+      axis_b_(params_.thrust_line.axis_body()) {
   reset();
 }
 
@@ -72,7 +72,7 @@ PistonPowerplant::Snapshot PistonPowerplant::evaluate(const Inputs& in) const {
 
   Propeller::Inputs prop_in;
   prop_in.rpm = propeller_rpm();
-  prop_in.axial_airspeed_mps = in.air_velocity_b_mps.dot(axis_b_);
+  prop_in.axial_airspeed_mps = in.air_velocity_body_mps.dot(axis_b_);
   prop_in.density_kgpm3 = in.density_kgpm3;
   prop_in.speed_of_sound_mps = in.speed_of_sound_mps;
   prop_in.blade_angle_rad = governor_.outputs().blade_angle_rad;
@@ -107,10 +107,10 @@ void PistonPowerplant::fill_outputs(const Inputs& in, const Snapshot& now) {
   Outputs& out = outputs_;
   const double sense = params_.rotation_sense;
   out.thrust_n = now.propeller.thrust_n;
-  out.force_b_n = out.thrust_n * axis_b_;
-  out.moment_datum_b_nm = params_.thrust_line.position_m.cross(out.force_b_n) -
+  out.force_body_n = out.thrust_n * axis_b_;
+  out.moment_datum_body_nm = params_.thrust_line.position_m.cross(out.force_body_n) -
                           sense * now.propeller.torque_nm * axis_b_;
-  out.rotor_angular_momentum_b_kgm2ps = sense * params_.shaft_inertia_kgm2 * omega_radps_ * axis_b_;
+  out.rotor_angular_momentum_body_kgm2ps = sense * params_.shaft_inertia_kgm2 * omega_radps_ * axis_b_;
   out.propeller_rpm = propeller_rpm();
   out.engine_rpm = out.propeller_rpm * params_.gear_ratio;
   out.blade_angle_rad = governor_.outputs().blade_angle_rad;

@@ -16,8 +16,8 @@ namespace fedsim::flight {
 /// State:   propeller shaft speed omega (rad/s, >= 0) and the blade angle.
 /// Inputs:  throttle, mixture, propeller lever (0..1), feather, running and failure flags;
 ///          ambient pressure (Pa), temperature (K), density (kg/m^3), speed of sound (m/s);
-///          air_velocity_b_mps, the aircraft's velocity relative to the air in body axes.
-/// Outputs: force_b_n (body axes) and moment_datum_b_nm (about the pack datum, body axes),
+///          air_velocity_body_mps, the aircraft's velocity relative to the air in body axes.
+/// Outputs: force_body_n (body axes) and moment_datum_body_nm (about the pack datum, body axes),
 ///          engine and propeller figures, fuel flow (kg/s), and the rotor's angular momentum
 ///          (body axes) for the gyroscopic term if the equations of motion carry it.
 ///
@@ -26,7 +26,7 @@ namespace fedsim::flight {
 /// integrated explicitly with the torques at the start of the step. The loss torque
 /// (engine pumping + friction) only ever brakes the shaft toward zero, never reverses it,
 /// so a stopped engine stays stopped unless something drives it.
-/// Force: thrust along ThrustLine::axis_b() at ThrustLine::position_m. Moment: r x F plus
+/// Force: thrust along ThrustLine::axis_body() at ThrustLine::position_m. Moment: r x F plus
 /// the air's torque on the propeller, -sense Q_propeller along the axis (a clockwise-from-
 /// behind propeller, sense +1, rolls the aircraft left).
 /// Not modelled: P-factor, slipstream effects on the airframe (aerodynamics' job).
@@ -59,13 +59,13 @@ class PistonPowerplant {
     double temperature_k = 288.15;
     double density_kgpm3 = 1.225;
     double speed_of_sound_mps = 340.294;
-    Eigen::Vector3d air_velocity_b_mps = Eigen::Vector3d::Zero();
+    Eigen::Vector3d air_velocity_body_mps = Eigen::Vector3d::Zero();
   };
 
   struct Outputs {
-    Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
-    Eigen::Vector3d moment_datum_b_nm = Eigen::Vector3d::Zero();
-    Eigen::Vector3d rotor_angular_momentum_b_kgm2ps = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d moment_datum_body_nm = Eigen::Vector3d::Zero();
+    Eigen::Vector3d rotor_angular_momentum_body_kgm2ps = Eigen::Vector3d::Zero();
     double thrust_n = 0.0;
     double engine_rpm = 0.0;
     double propeller_rpm = 0.0;

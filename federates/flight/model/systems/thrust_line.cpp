@@ -8,7 +8,7 @@
 
 namespace fedsim::flight {
 
-Eigen::Vector3d ThrustLine::axis_b() const {
+Eigen::Vector3d ThrustLine::axis_body() const {
   return {std::cos(pitch_rad) * std::cos(yaw_rad), std::cos(pitch_rad) * std::sin(yaw_rad),
           -std::sin(pitch_rad)};
 }

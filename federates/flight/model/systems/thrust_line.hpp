@@ -18,7 +18,7 @@ struct ThrustLine {
   double yaw_rad = 0.0;
 
   /// Unit vector along the thrust, body axes: (cos p cos y, cos p sin y, -sin p).
-  Eigen::Vector3d axis_b() const;
+  Eigen::Vector3d axis_body() const;
   /// Throws std::invalid_argument naming `prefix` + the bad field.
   void validate(const std::string& prefix) const;
 };

@@ -61,7 +61,7 @@ void Turbofan::Params::validate() const {
 }
 
 Turbofan::Turbofan(Params params)
-    : params_((params.validate(), std::move(params))), axis_b_(params_.thrust_line.axis_b()) {
+    : params_((params.validate(), std::move(params))), axis_b_(params_.thrust_line.axis_body()) {
   reset();
 }
 
@@ -117,8 +117,8 @@ void Turbofan::fill_outputs(const Inputs& in) {
   Outputs& out = outputs_;
   out.density_altitude_m = density_altitude_m(in.density_kgpm3);
   out.thrust_n = thrust_n(in, out.density_altitude_m);
-  out.force_b_n = out.thrust_n * axis_b_;
-  out.moment_datum_b_nm = p.thrust_line.position_m.cross(out.force_b_n);
+  out.force_body_n = out.thrust_n * axis_b_;
+  out.moment_datum_body_nm = p.thrust_line.position_m.cross(out.force_body_n);
   out.n1_pct = n1_pct_;
   out.n2_pct = n2_pct_;
   const bool burning = in.running && !in.failed;

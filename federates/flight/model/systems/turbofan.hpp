@@ -15,7 +15,7 @@ namespace fedsim::flight {
 /// State:   N1 and N2 (% of their maximum).
 /// Inputs:  throttle (0..1), running and failure flags, Mach number, ambient density
 ///          (kg/m^3) and temperature (K).
-/// Outputs: force_b_n along the thrust line (body axes), moment_datum_b_nm = r x F about the
+/// Outputs: force_body_n along the thrust line (body axes), moment_datum_body_nm = r x F about the
 ///          pack datum, thrust (N), N1, N2 (%), fuel flow (kg/s), the density altitude used.
 ///
 /// Model:
@@ -82,8 +82,8 @@ class Turbofan {
   };
 
   struct Outputs {
-    Eigen::Vector3d force_b_n = Eigen::Vector3d::Zero();
-    Eigen::Vector3d moment_datum_b_nm = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force_body_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d moment_datum_body_nm = Eigen::Vector3d::Zero();
     double thrust_n = 0.0;
     double n1_pct = 0.0;
     double n2_pct = 0.0;

@@ -200,13 +200,13 @@ Eigen::Vector3d Turbulence::to_ned(const Eigen::Vector3d& uvw, const Inputs& in)
   const double h_ft = std::isnan(in.height_agl_m) ? 0.0 : in.height_agl_m / units::kFtToM;
   const double f = std::clamp(
       (h_ft - kLowAltitudeTopFt) / (kHighAltitudeBottomFt - kLowAltitudeTopFt), 0.0, 1.0);
-  const Eigen::Matrix3d body_to_ned = in.dcm_ned_to_body.transpose();
-  const Eigen::Vector3d high = body_to_ned * uvw;
+  const Eigen::Matrix3d ned_from_body = in.body_from_ned.transpose();
+  const Eigen::Vector3d high = ned_from_body * uvw;
   if (f >= 1.0) return high;
   // Low altitude: u along the mean wind, v to its right, w down. Calm air: along the
   // aircraft's horizontal heading.
   Eigen::Vector2d along = in.mean_wind_ned_mps.head<2>();
-  if (!(along.norm() > 0.1)) along = body_to_ned.col(0).head<2>();
+  if (!(along.norm() > 0.1)) along = ned_from_body.col(0).head<2>();
   along = along.norm() > 1e-9 ? Eigen::Vector2d(along.normalized()) : Eigen::Vector2d::UnitX();
   const Eigen::Vector3d low(uvw.x() * along.x() - uvw.y() * along.y(),
                             uvw.x() * along.y() + uvw.y() * along.x(), uvw.z());
@@ -223,7 +223,7 @@ void Turbulence::step(double dt_s, const Inputs& in) {
   Outputs& out = outputs_;
   out.scales = s;
   out.gust_ned_mps = to_ned(uvw, in);
-  out.gust_b_mps = in.dcm_ned_to_body * out.gust_ned_mps;
+  out.gust_body_mps = in.body_from_ned * out.gust_ned_mps;
 
   // Gust rates: p_g its own first-order process; q_g and r_g from the body-axis w and v
   // gusts through s / (1 + tau s) = (1 - low-pass) / tau.
@@ -232,17 +232,17 @@ void Turbulence::step(double dt_s, const Inputs& in) {
   const double tau_q = 4.0 * b / (std::numbers::pi * v);
   const double tau_r = 3.0 * b / (std::numbers::pi * v);
   y_p_ = first_order_step(y_p_, dt_s, tau_p, normal_(rng_));
-  const double w_b = out.gust_b_mps.z(), v_b = out.gust_b_mps.y();
+  const double w_body = out.gust_body_mps.z(), v_body = out.gust_body_mps.y();
   if (!lags_primed_) {
-    lag_w_mps_ = w_b;
-    lag_v_mps_ = v_b;
+    lag_w_mps_ = w_body;
+    lag_v_mps_ = v_body;
     lags_primed_ = true;
   }
-  lag_w_mps_ += (w_b - lag_w_mps_) * -std::expm1(-dt_s / tau_q);
-  lag_v_mps_ += (v_b - lag_v_mps_) * -std::expm1(-dt_s / tau_r);
-  out.gust_rates_b_radps =
+  lag_w_mps_ += (w_body - lag_w_mps_) * -std::expm1(-dt_s / tau_q);
+  lag_v_mps_ += (v_body - lag_v_mps_) * -std::expm1(-dt_s / tau_r);
+  out.gust_rates_body_radps =
       Eigen::Vector3d(roll_rate_sigma_radps(s.sigma_w_mps, s.length_w_m) * y_p_,
-                      -(w_b - lag_w_mps_) / (v * tau_q), (v_b - lag_v_mps_) / (v * tau_r));
+                      -(w_body - lag_w_mps_) / (v * tau_q), (v_body - lag_v_mps_) / (v * tau_r));
 }
 
 }  // namespace fedsim::flight

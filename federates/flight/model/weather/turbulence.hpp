@@ -64,7 +64,7 @@ class Turbulence {
   struct Inputs {
     double tas_mps = 0.0;
     double height_agl_m = 0.0;
-    Eigen::Matrix3d dcm_ned_to_body = Eigen::Matrix3d::Identity();
+    Eigen::Matrix3d body_from_ned = Eigen::Matrix3d::Identity();
     Eigen::Vector3d mean_wind_ned_mps = Eigen::Vector3d::Zero();
   };
 
@@ -75,8 +75,8 @@ class Turbulence {
 
   struct Outputs {
     Eigen::Vector3d gust_ned_mps = Eigen::Vector3d::Zero();
-    Eigen::Vector3d gust_b_mps = Eigen::Vector3d::Zero();
-    Eigen::Vector3d gust_rates_b_radps = Eigen::Vector3d::Zero();  ///< p_g, q_g, r_g
+    Eigen::Vector3d gust_body_mps = Eigen::Vector3d::Zero();
+    Eigen::Vector3d gust_rates_body_radps = Eigen::Vector3d::Zero();  ///< p_g, q_g, r_g
     Scales scales;
   };
 

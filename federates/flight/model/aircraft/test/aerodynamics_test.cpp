@@ -80,8 +80,8 @@ TEST(Aerodynamics, C172StaticAndDynamicStability) {
   const auto de = coefficients([&](auto& in) { in.elevator_rad = h; });
   const auto beta = coefficients([&](auto& in) { in.beta_rad = h; });
   const double b_2v = 36.0 * units::kFtToM / (2.0 * 50.0);
-  const auto p = coefficients([&](auto& in) { in.omega_air_b.x() = h / b_2v; });
-  const auto r = coefficients([&](auto& in) { in.omega_air_b.z() = h / b_2v; });
+  const auto p = coefficients([&](auto& in) { in.omega_air_body.x() = h / b_2v; });
+  const auto r = coefficients([&](auto& in) { in.omega_air_body.z() = h / b_2v; });
 
   const double cm_alpha = (alpha.Cm - base.Cm) / h;
   EXPECT_LT(cm_alpha, 0.0);
@@ -112,9 +112,9 @@ TEST(Aerodynamics, ControlCommandsMatchDesignSignConventions) {
     const double de = fc.elevator->demanded_deflection_rad(1.0);
     const double da = fc.aileron->demanded_deflection_rad(1.0);
     const double dr = fc.rudder->demanded_deflection_rad(1.0);
-    EXPECT_LT(with([&](auto& in) { in.elevator_rad = de; }).moment_b.y(), base.moment_b.y());
-    EXPECT_GT(with([&](auto& in) { in.aileron_rad = da; }).moment_b.x(), base.moment_b.x());
-    EXPECT_GT(with([&](auto& in) { in.rudder_rad = dr; }).moment_b.z(), base.moment_b.z());
+    EXPECT_LT(with([&](auto& in) { in.elevator_rad = de; }).moment_body.y(), base.moment_body.y());
+    EXPECT_GT(with([&](auto& in) { in.aileron_rad = da; }).moment_body.x(), base.moment_body.x());
+    EXPECT_GT(with([&](auto& in) { in.rudder_rad = dr; }).moment_body.z(), base.moment_body.z());
   }
 }
 
@@ -126,14 +126,14 @@ TEST(Aerodynamics, LiftActsUpAndDragOpposesTheAirVelocity) {
   const auto out = aero.compute(in, false);
   ASSERT_GT(out.CL, 0.0);
   ASSERT_GT(out.CD, 0.0);
-  EXPECT_LT(out.force_b.z(), -0.9 * out.lift_n);  // lift is up: body -z at small alpha
+  EXPECT_LT(out.force_body.z(), -0.9 * out.lift_n);  // lift is up: body -z at small alpha
   // Air-relative velocity direction in body axes; drag is the force component against it.
   const Eigen::Vector3d v_hat(std::cos(alpha) * std::cos(beta), std::sin(beta),
                               std::sin(alpha) * std::cos(beta));
-  EXPECT_NEAR(out.force_b.dot(v_hat), -out.drag_n, 1e-9 * out.lift_n);
+  EXPECT_NEAR(out.force_body.dot(v_hat), -out.drag_n, 1e-9 * out.lift_n);
   // Lift is perpendicular to the velocity, in the plane of symmetry.
   const Eigen::Vector3d lift_dir(std::sin(alpha), 0.0, -std::cos(alpha));
-  EXPECT_NEAR(out.force_b.dot(lift_dir), out.lift_n, 1e-9 * out.lift_n);
+  EXPECT_NEAR(out.force_body.dot(lift_dir), out.lift_n, 1e-9 * out.lift_n);
   EXPECT_NEAR(out.lift_n, in.qbar_pa * 174.0 * units::kFtToM * units::kFtToM * out.CL, 1e-6);
 }
 
@@ -146,8 +146,8 @@ TEST(Aerodynamics, SphereDragIsExactlyAgainstTheVelocity) {
   const Eigen::Vector3d v_hat(std::cos(alpha) * std::cos(beta), std::sin(beta),
                               std::sin(alpha) * std::cos(beta));
   const double drag = in.qbar_pa * 0.1963495 * units::kFtToM * units::kFtToM * 0.1;
-  EXPECT_NEAR((out.force_b + drag * v_hat).norm(), 0.0, 1e-9 * drag);
-  EXPECT_DOUBLE_EQ(out.moment_b.norm(), 0.0);
+  EXPECT_NEAR((out.force_body + drag * v_hat).norm(), 0.0, 1e-9 * drag);
+  EXPECT_DOUBLE_EQ(out.moment_body.norm(), 0.0);
 }
 
 TEST(Aerodynamics, NasaBrickDampingMomentsFollowTheReportFormula) {
@@ -156,30 +156,30 @@ TEST(Aerodynamics, NasaBrickDampingMomentsFollowTheReportFormula) {
   in.tas_mps = 30.0;
   const double rho = 0.458;  // near 30,000 ft
   in.qbar_pa = 0.5 * rho * in.tas_mps * in.tas_mps;
-  in.omega_air_b = Eigen::Vector3d(10.0, 20.0, 30.0) * kDeg;
+  in.omega_air_body = Eigen::Vector3d(10.0, 20.0, 30.0) * kDeg;
   const auto out = aero.evaluate(in);
   // NASA TM-2015-218675 brick: L = 1/4 rho V S b^2 Clp p (seed eq. 3.19), with S = 8 x 4 in,
   // b = 4 in, c = 8 in and Clp = Cmq = Cnr = -1.
   const double in_m = 0.0254, s = 32.0 * in_m * in_m, b = 4.0 * in_m, c = 8.0 * in_m;
   const double k = 0.25 * rho * in.tas_mps * s;
-  EXPECT_NEAR(out.moment_b.x(), -k * b * b * in.omega_air_b.x(), 1e-12);
-  EXPECT_NEAR(out.moment_b.y(), -k * c * c * in.omega_air_b.y(), 1e-12);
-  EXPECT_NEAR(out.moment_b.z(), -k * b * b * in.omega_air_b.z(), 1e-12);
-  EXPECT_DOUBLE_EQ(out.force_b.norm(), 0.0);
+  EXPECT_NEAR(out.moment_body.x(), -k * b * b * in.omega_air_body.x(), 1e-12);
+  EXPECT_NEAR(out.moment_body.y(), -k * c * c * in.omega_air_body.y(), 1e-12);
+  EXPECT_NEAR(out.moment_body.z(), -k * b * b * in.omega_air_body.z(), 1e-12);
+  EXPECT_DOUBLE_EQ(out.force_body.norm(), 0.0);
   // At rest the rate terms vanish instead of dividing by zero.
   in.tas_mps = 0.0;
   in.qbar_pa = 0.0;
-  EXPECT_DOUBLE_EQ(aero.evaluate(in).moment_b.norm(), 0.0);
+  EXPECT_DOUBLE_EQ(aero.evaluate(in).moment_body.norm(), 0.0);
 }
 
 TEST(Aerodynamics, UndampedBrickAndDraglessSphereProduceNothing) {
   for (const char* name : {"nasa_brick.yaml", "nasa_sphere.yaml"}) {
     Aerodynamics aero(pack(name));
     Aerodynamics::Inputs in = cruise(0.3, 100.0);
-    in.omega_air_b = Eigen::Vector3d(1.0, 2.0, 3.0);
+    in.omega_air_body = Eigen::Vector3d(1.0, 2.0, 3.0);
     const auto out = aero.evaluate(in);
-    EXPECT_DOUBLE_EQ(out.force_b.norm(), 0.0) << name;
-    EXPECT_DOUBLE_EQ(out.moment_b.norm(), 0.0) << name;
+    EXPECT_DOUBLE_EQ(out.force_body.norm(), 0.0) << name;
+    EXPECT_DOUBLE_EQ(out.moment_body.norm(), 0.0) << name;
   }
 }
 
@@ -230,7 +230,7 @@ TEST(Aerodynamics, FlapDegreesComeFromTheNormalisedPosition) {
 TEST(Aerodynamics, EvaluationDoesNotAllocate) {
   Aerodynamics aero(pack("c172.yaml"));
   Aerodynamics::Inputs in = cruise(0.1);
-  in.omega_air_b = Eigen::Vector3d(0.1, 0.2, 0.3);
+  in.omega_air_body = Eigen::Vector3d(0.1, 0.2, 0.3);
   in.flap_norm = 0.5;
   {
     const util::AllocationScope probe_scope;
@@ -315,12 +315,12 @@ TEST(AeroFlowEnvelope, TailwindGivesTheHeadOnDragAndNoLift) {
     EXPECT_DOUBLE_EQ(out.CY, 0.0);
     // Drag along the flow, from behind: it pushes the aircraft forward.
     const Eigen::Vector3d v_hat(std::cos(alpha), 0.0, std::sin(alpha));
-    EXPECT_NEAR((out.force_b + out.drag_n * v_hat).norm(), 0.0, 1e-9 * out.drag_n);
-    EXPECT_GT(out.force_b.x(), 0.0);
+    EXPECT_NEAR((out.force_body + out.drag_n * v_hat).norm(), 0.0, 1e-9 * out.drag_n);
+    EXPECT_GT(out.force_body.x(), 0.0);
     // About the head-on drag and pitching moment (the wing-plane incidence is under 1 deg).
     EXPECT_NEAR(out.CD, head_on.CD, 0.01);
     EXPECT_NEAR(out.Cm, head_on.Cm, 0.05);
-    EXPECT_LT(out.force_b.norm(), 0.1 * qbar_s(p, in));
+    EXPECT_LT(out.force_body.norm(), 0.1 * qbar_s(p, in));
   }
 }
 
@@ -332,13 +332,13 @@ TEST(AeroFlowEnvelope, CrosswindLiftsNothingAndWeathercocksIntoTheWind) {
   Aerodynamics aero(p);
   const auto reference = aero.compute(wind_from(0.0, 0.5 * kPi), false);
   EXPECT_DOUBLE_EQ(reference.CL, 0.0);
-  EXPECT_LT(reference.force_b.y(), 0.0);
-  EXPECT_NEAR(reference.force_b.y(), -reference.drag_n, 1e-9 * reference.drag_n);
+  EXPECT_LT(reference.force_body.y(), 0.0);
+  EXPECT_NEAR(reference.force_body.y(), -reference.drag_n, 1e-9 * reference.drag_n);
   EXPECT_GT(reference.Cn, 0.0);
   for (double alpha : {-3.0, -1.0, 0.4, 2.0, 3.1}) {
     const auto out = aero.compute(wind_from(alpha, 0.5 * kPi), false);
-    EXPECT_NEAR((out.force_b - reference.force_b).norm(), 0.0, 1e-9 * reference.drag_n) << alpha;
-    EXPECT_NEAR((out.moment_b - reference.moment_b).norm(), 0.0, 1e-9) << alpha;
+    EXPECT_NEAR((out.force_body - reference.force_body).norm(), 0.0, 1e-9 * reference.drag_n) << alpha;
+    EXPECT_NEAR((out.moment_body - reference.moment_body).norm(), 0.0, 1e-9) << alpha;
   }
 }
 
@@ -391,15 +391,15 @@ TEST(AeroFlowEnvelope, EveryFlowDirectionIsBoundedByTheDataAndContinuous) {
       const auto l = aero.compute(wind_from(kPi - e, beta), false);
       const auto r = aero.compute(wind_from(-kPi + e, beta), false);
       const double scale = qbar_s(p, wind_from(0.0, 0.0));
-      EXPECT_LT((l.force_b - r.force_b).norm(), 1e-3 * scale) << beta;
-      EXPECT_LT((l.moment_b - r.moment_b).norm(), 1e-3 * scale * p.geometry.wing_span_m) << beta;
+      EXPECT_LT((l.force_body - r.force_body).norm(), 1e-3 * scale) << beta;
+      EXPECT_LT((l.moment_body - r.moment_body).norm(), 1e-3 * scale * p.geometry.wing_span_m) << beta;
     }
     for (double alpha : {-2.0, 0.1, 1.0}) {
       const auto l = aero.compute(wind_from(alpha, 0.5 * kPi - e), false);
       const auto r = aero.compute(wind_from(alpha + kPi, 0.5 * kPi - e), false);
       const double scale = qbar_s(p, wind_from(0.0, 0.0));
-      EXPECT_LT((l.force_b - r.force_b).norm(), 1e-3 * scale) << alpha;
-      EXPECT_LT((l.moment_b - r.moment_b).norm(), 1e-3 * scale * p.geometry.wing_span_m) << alpha;
+      EXPECT_LT((l.force_body - r.force_body).norm(), 1e-3 * scale) << alpha;
+      EXPECT_LT((l.moment_body - r.moment_body).norm(), 1e-3 * scale * p.geometry.wing_span_m) << alpha;
     }
   }
 }
@@ -420,7 +420,7 @@ TEST(AeroFlowEnvelope, AFlowFromBehindIsNotAStall) {
 }
 
 TEST(Aerodynamics, WindToBodyIsARotation) {
-  const Eigen::Matrix3d m = Aerodynamics::wind_to_body(0.3, -0.2);
+  const Eigen::Matrix3d m = Aerodynamics::body_from_wind(0.3, -0.2);
   EXPECT_NEAR((m * m.transpose() - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-15);
   EXPECT_NEAR(m.determinant(), 1.0, 1e-15);
 }

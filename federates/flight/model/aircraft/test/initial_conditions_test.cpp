@@ -54,7 +54,7 @@ TEST(InitialConditionFile, ReadsEveryFieldInSi) {
   EXPECT_EQ(ic.velocity_mps, Eigen::Vector3d(51.0, 0.5, 1.2));
   EXPECT_NEAR(ic.attitude.phi_rad, 5.0 * kDeg, 1e-15);
   EXPECT_NEAR(ic.attitude.psi_rad, 270.0 * kDeg, 1e-15);
-  EXPECT_NEAR(ic.omega_b_rps.y(), -2.0 * kDeg, 1e-15);
+  EXPECT_NEAR(ic.omega_body_radps.y(), -2.0 * kDeg, 1e-15);
   EXPECT_FALSE(ic.omega_relative_to_earth);
   EXPECT_FALSE(ic.engines_running);
   EXPECT_FALSE(ic.settle_engines);

@@ -45,7 +45,7 @@ TEST(PackToSystems, B737TurbofansGiveTheirRatedStaticThrust) {
     // MilThrust table is 1.0 at Mach 0 and density altitude 0: 20000 lbf.
     EXPECT_NEAR(engine.outputs().thrust_n, 20000.0 * kLbf, 1e-3 * 20000.0 * kLbf);
     EXPECT_NEAR(engine.outputs().n1_pct, 100.0, 0.01);
-    EXPECT_GT(engine.outputs().force_b_n.x(), 0.0);
+    EXPECT_GT(engine.outputs().force_body_n.x(), 0.0);
   }
 }
 

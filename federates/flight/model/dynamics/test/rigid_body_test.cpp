@@ -33,11 +33,11 @@ MassProperties tumbler() { return MassProperties::from_moments(2.0, 0.0026, 0.00
 
 Eigen::Vector3d inertial_momentum(const RigidBody& body) {
   const RigidBodyState s = body.state();
-  return s.attitude.toRotationMatrix() * (body.dynamics().mass_properties().inertia_kgm2 * s.omega_b_rps);
+  return s.attitude.toRotationMatrix() * (body.dynamics().mass_properties().inertia_kgm2 * s.omega_body_radps);
 }
 
 double rotational_energy(const RigidBody& body) {
-  const Eigen::Vector3d w = body.state().omega_b_rps;
+  const Eigen::Vector3d w = body.state().omega_body_radps;
   return 0.5 * w.dot(body.dynamics().mass_properties().inertia_kgm2 * w);
 }
 
@@ -45,7 +45,7 @@ InitialConditions tumbling_start() {
   InitialConditions ic;
   ic.position.alt_m = 1000.0;
   ic.attitude = {0.2, -0.4, 1.0};
-  ic.omega_b_rps = {10.0 * kDeg, 20.0 * kDeg, 30.0 * kDeg};
+  ic.omega_body_radps = {10.0 * kDeg, 20.0 * kDeg, 30.0 * kDeg};
   return ic;
 }
 
@@ -55,7 +55,7 @@ double worst_norm_error(double constraint_kh) {
   config.quaternion_constraint_kh = constraint_kh;
   RigidBody body(config, tumbler());
   InitialConditions ic = tumbling_start();
-  ic.omega_b_rps = {3.0, -5.0, 4.0};
+  ic.omega_body_radps = {3.0, -5.0, 4.0};
   body.reset(ic);
   NoForces none;
   double worst = 0.0;
@@ -85,7 +85,7 @@ TEST(RigidBody, QuaternionNormHeldByEveryIntegratorWithItsDefaultGain) {
                             IntegrationMethod::kAb4}) {
     RigidBody body(flat_config(method), tumbler());
     InitialConditions ic = tumbling_start();
-    ic.omega_b_rps = {3.0, -5.0, 4.0};
+    ic.omega_body_radps = {3.0, -5.0, 4.0};
     body.reset(ic);
     NoForces none;
     double worst = 0.0;
@@ -118,7 +118,7 @@ TEST(RigidBody, TorqueFreeBodyConservesMomentumAndEnergy) {
   std::cout << "torque-free 60 s, RK4 h = 0.01 s: |dH|/|H| " << worst_h << ", dE/E " << worst_e
             << "\n";
   // The body really does tumble (intermediate-axis motion changes the body rates a lot).
-  EXPECT_GT((body.state().omega_b_rps - tumbling_start().omega_b_rps).norm(), 0.1);
+  EXPECT_GT((body.state().omega_body_radps - tumbling_start().omega_body_radps).norm(), 0.1);
 }
 
 TEST(RigidBody, MomentEquationsMatchTheBooksScalarForm) {
@@ -127,10 +127,10 @@ TEST(RigidBody, MomentEquationsMatchTheBooksScalarForm) {
   const MassProperties mass = MassProperties::from_moments(10.0, ix, iy, iz, ixz, ixy, iyz);
   const RigidBodyDynamics dynamics(EarthModel({EarthModelKind::kFlat}), mass);
   RigidBodyState state;
-  state.omega_b_rps = {0.7, -1.2, 0.4};
+  state.omega_body_radps = {0.7, -1.2, 0.4};
   Wrench wrench;
-  wrench.moment_b_nm = {1.5, -0.5, 2.5};
-  const Eigen::Vector3d wd = dynamics.accelerations(state, wrench).omega_dot_b_rps2;
+  wrench.moment_body_nm = {1.5, -0.5, 2.5};
+  const Eigen::Vector3d wd = dynamics.accelerations(state, wrench).omega_dot_body_radps2;
   const double p = 0.7, q = -1.2, r = 0.4;
   const double pd = wd.x(), qd = wd.y(), rd = wd.z();
   EXPECT_NEAR(ix * pd + q * r * (iz - iy) - iyz * (q * q - r * r) - ixz * (rd + p * q) -
@@ -146,10 +146,10 @@ TEST(RigidBody, RotorMomentumGivesGyroscopicYawInPitch) {
   const RigidBodyDynamics dynamics(EarthModel({EarthModelKind::kFlat}),
                                    MassProperties::from_moments(1000.0, 1000.0, 2000.0, 2500.0));
   RigidBodyState state;
-  state.omega_b_rps = {0.0, 0.2, 0.0};
+  state.omega_body_radps = {0.0, 0.2, 0.0};
   Wrench wrench;
-  wrench.rotor_momentum_b_kgm2ps = {500.0, 0.0, 0.0};
-  const Eigen::Vector3d wd = dynamics.accelerations(state, wrench).omega_dot_b_rps2;
+  wrench.rotor_momentum_body_kgm2ps = {500.0, 0.0, 0.0};
+  const Eigen::Vector3d wd = dynamics.accelerations(state, wrench).omega_dot_body_radps2;
   EXPECT_NEAR(wd.z(), 0.2 * 500.0 / 2500.0, 1e-15);  // r' = q hx / Iz (eq. 3.112)
   EXPECT_NEAR(wd.x(), 0.0, 1e-15);
   EXPECT_NEAR(wd.y(), 0.0, 1e-15);
@@ -215,11 +215,11 @@ TEST(RigidBody, FlatEarthGeodeticMapping) {
 
 TEST(RigidBody, SpecificForceAtAnOffsetPoint) {
   RigidBodyAccelerations acc;
-  acc.specific_force_b_mps2 = {0.0, 0.0, -9.81};
-  acc.omega_dot_b_rps2 = {0.0, 0.5, 0.0};
+  acc.specific_force_body_mps2 = {0.0, 0.0, -9.81};
+  acc.omega_dot_body_radps2 = {0.0, 0.5, 0.0};
   const Eigen::Vector3d omega(0.0, 0.0, 2.0);
   const Eigen::Vector3d eye(3.0, 0.0, -1.0);
-  const Eigen::Vector3d f = RigidBodyDynamics::specific_force_at_b(acc, omega, eye);
+  const Eigen::Vector3d f = RigidBodyDynamics::specific_force_at_body(acc, omega, eye);
   // Centripetal -r^2 x = -12 along x; pitch acceleration q' x r adds (0.5 x -1 ...) terms.
   EXPECT_NEAR(f.x(), -12.0 + 0.5 * -1.0, 1e-12);
   EXPECT_NEAR(f.y(), 0.0, 1e-12);
@@ -237,7 +237,7 @@ TEST(RigidBody, AllMethodsAgreeOnATumbleAndRestartOnReposition) {
     body.reset(tumbling_start());
     for (int i = 0; i < 200; ++i) body.step(0.01, 4, none);
     const double tolerance = method == IntegrationMethod::kEuler ? 1e-2 : 1e-5;
-    EXPECT_LT((body.state().omega_b_rps - reference.state().omega_b_rps).norm(), tolerance)
+    EXPECT_LT((body.state().omega_body_radps - reference.state().omega_body_radps).norm(), tolerance)
         << to_string(method);
   }
 }

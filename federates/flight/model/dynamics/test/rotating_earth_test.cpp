@@ -25,7 +25,7 @@ class Table : public ForceSource {
   Wrench forces(const RigidBodyState& s, double) override {
     Wrench w;
     const Eigen::Vector3d g = Wgs84::gravity_ecef(s.position_m);
-    w.force_b_n = s.attitude.conjugate() * (-mass_kg_ * g);
+    w.force_body_n = s.attitude.conjugate() * (-mass_kg_ * g);
     return w;
   }
 
@@ -56,7 +56,7 @@ TEST(RotatingEarth, SupportedBodyStaysPutRelativeToTheEarth) {
   EXPECT_NEAR(out.geodetic.lon_rad, ic.position.lon_rad, 1e-12);
   EXPECT_LT(out.velocity_ned_mps.norm(), 1e-8);
   EXPECT_NEAR(out.euler.psi_rad, 2.0, 1e-9);
-  EXPECT_LT(out.omega_b_wrt_earth_rps.norm(), 1e-15);
+  EXPECT_LT(out.omega_body_wrt_earth_radps.norm(), 1e-15);
 }
 
 TEST(RotatingEarth, FreeFallMatchesAnInertialFrameSolution) {
@@ -85,7 +85,7 @@ TEST(RotatingEarth, FreeFallMatchesAnInertialFrameSolution) {
   }
   const double t = body.time_s();
   const Eigen::Matrix3d ecef_from_eci =
-      Eigen::AngleAxisd(-wgs84::kEarthRateRps * t, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      Eigen::AngleAxisd(-wgs84::kEarthRateRadps * t, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Vector3d r_expected = ecef_from_eci * y.head<3>();
   const Eigen::Vector3d v_expected = ecef_from_eci * (y.tail<3>() - w.cross(y.head<3>()));
   EXPECT_LT((body.state().position_m - r_expected).norm(), 1e-6);
@@ -106,7 +106,7 @@ TEST(RotatingEarth, InertiallyFixedBodyRollsAgainstTheEarthAtTheEquator) {
   NoForces none;
   for (int i = 0; i < 3000; ++i) body.step(0.01, 1, none);
   EXPECT_NEAR(body.outputs().euler.phi_rad / kDeg, -0.12540, 5e-5);
-  EXPECT_LT(body.outputs().omega_b_rps.norm(), 1e-18);
+  EXPECT_LT(body.outputs().omega_body_radps.norm(), 1e-18);
 }
 
 TEST(RotatingEarth, EarthRelativeRatesAddTheEarthRate) {
@@ -115,9 +115,9 @@ TEST(RotatingEarth, EarthRelativeRatesAddTheEarthRate) {
   ic.attitude = {0.0, 0.0, 90.0 * kDeg};  // heading east at the equator: body y points south
   ic.omega_relative_to_earth = true;
   body.reset(ic);
-  const Eigen::Vector3d omega = body.outputs().omega_b_rps;
+  const Eigen::Vector3d omega = body.outputs().omega_body_radps;
   EXPECT_NEAR(omega.x(), 0.0, 1e-15);
-  EXPECT_NEAR(omega.y(), -wgs84::kEarthRateRps, 1e-15);
+  EXPECT_NEAR(omega.y(), -wgs84::kEarthRateRadps, 1e-15);
   EXPECT_NEAR(omega.z(), 0.0, 1e-15);
 }
 

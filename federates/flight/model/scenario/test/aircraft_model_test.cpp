@@ -42,7 +42,7 @@ TEST(AircraftModel, ResetPutsTheAircraftWhereTheInitialConditionsSay) {
     EXPECT_NEAR(o.euler.theta_rad, ic.attitude.theta_rad, 1e-12);
     EXPECT_NEAR(o.euler.psi_rad, ic.attitude.psi_rad, 1e-12);
     EXPECT_NEAR(o.tas_mps, 50.0, 1e-9);  // calm air
-    EXPECT_NEAR(o.q_ned_to_body.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(o.q_ned_from_body.norm(), 1.0, 1e-12);
     EXPECT_NEAR(o.time_s, 0.0, 0.0);
     // The ECEF position is the WGS-84 point of the geodetic one on either earth.
     EXPECT_LT((o.position_ecef_m - Wgs84::ecef_from_geodetic(o.geodetic)).norm(), 1e-6);
@@ -62,7 +62,7 @@ TEST(AircraftModel, BodyVelocityInitialConditions) {
   ic.attitude.theta_rad = 0.1;
   model->reset(ic);
   const AircraftOutputs& o = model->outputs();
-  EXPECT_LT((o.velocity_b_mps - ic.velocity_mps).norm(), 1e-9);
+  EXPECT_LT((o.velocity_body_mps - ic.velocity_mps).norm(), 1e-9);
   EXPECT_NEAR(o.alpha_rad, std::atan2(5.0, 50.0), 1e-12);
   EXPECT_NEAR(o.velocity_ned_mps.x(), 0.0, 1e-9);  // heading east
 }
@@ -76,7 +76,7 @@ TEST(AircraftModel, AlphaAndBetaAreDefinedAtZeroAirspeed) {
   EXPECT_EQ(o.alpha_rad, 0.0);
   EXPECT_EQ(o.beta_rad, 0.0);
   EXPECT_EQ(o.qbar_pa, 0.0);
-  EXPECT_TRUE(o.total_force_b_n.allFinite());
+  EXPECT_TRUE(o.total_force_body_n.allFinite());
   model->step(0.01);
   EXPECT_TRUE(std::isfinite(model->outputs().alpha_rad));
   EXPECT_GT(model->outputs().velocity_ned_mps.z(), 0.0);  // falling
@@ -129,12 +129,12 @@ TEST(AircraftModel, AerodynamicMomentsAreMovedFromTheReferencePointToTheCg) {
   model.set_weather(weather);
   model.reset(flying(0.0, 0.0, 1000.0, 0.0, 0.0));
   const AircraftOutputs& o = model.outputs();
-  const Eigen::Vector3d drag = o.aero_force_b_n;
+  const Eigen::Vector3d drag = o.aero_force_body_n;
   EXPECT_LT(drag.x(),
             -0.5);  // 0.9 N: the air blows toward the south: drag on the body points south
-  EXPECT_LT((o.total_moment_b_nm - arm.cross(drag)).norm(), 1e-12);
+  EXPECT_LT((o.total_moment_body_nm - arm.cross(drag)).norm(), 1e-12);
   // Euler's equation at rest: omega' = J^-1 M.
-  EXPECT_LT((o.omega_dot_b_rps2 - o.inertia_kgm2.inverse() * arm.cross(drag)).norm(), 1e-12);
+  EXPECT_LT((o.omega_dot_body_radps2 - o.inertia_kgm2.inverse() * arm.cross(drag)).norm(), 1e-12);
 }
 
 TEST(AircraftModel, EngineAndGearMomentsAreAboutTheCgAndTheTotalsAddUp) {
@@ -142,24 +142,24 @@ TEST(AircraftModel, EngineAndGearMomentsAreAboutTheCgAndTheTotalsAddUp) {
   ASSERT_TRUE(Trim(*model).solve(cruise("c172.yaml")).converged);
   const AircraftOutputs& o = model->outputs();
   EXPECT_LT(
-      (o.total_force_b_n - o.aero_force_b_n - o.propulsion_force_b_n - o.gear_force_b_n).norm(),
+      (o.total_force_body_n - o.aero_force_body_n - o.propulsion_force_body_n - o.gear_force_body_n).norm(),
       1e-9);
   EXPECT_LT(
-      (o.total_moment_b_nm - o.aero_moment_b_nm - o.propulsion_moment_b_nm - o.gear_moment_b_nm)
+      (o.total_moment_body_nm - o.aero_moment_body_nm - o.propulsion_moment_body_nm - o.gear_moment_body_nm)
           .norm(),
       1e-9);
   // The aero moment about the CG: the coefficients' moment about the reference point plus the
   // force at its arm.
   const Eigen::Vector3d arm = model->pack().geometry.aero_reference_point_m - o.cg_m;
-  EXPECT_LT((o.aero_moment_b_nm - (o.aero.moment_b + arm.cross(o.aero.force_b))).norm(), 1e-9);
+  EXPECT_LT((o.aero_moment_body_nm - (o.aero.moment_body + arm.cross(o.aero.force_body))).norm(), 1e-9);
   // The thrust acts on the engine's line (the datum-relative position less the CG) and the
   // propeller's torque rolls the airframe the other way round from its spin (spin_sense -1:
   // anticlockwise seen from behind, so the reaction rolls right, +x).
   const EngineSpec& engine = model->pack().engines.front();
   const Eigen::Vector3d thrust(o.engines[0].thrust_n, 0.0, 0.0);
   const Eigen::Vector3d thrust_moment = (engine.position_m - o.cg_m).cross(thrust);
-  EXPECT_NEAR(o.propulsion_moment_b_nm.y(), thrust_moment.y(), 1e-9);
-  EXPECT_GT(o.propulsion_moment_b_nm.x(), 0.0);
+  EXPECT_NEAR(o.propulsion_moment_body_nm.y(), thrust_moment.y(), 1e-9);
+  EXPECT_GT(o.propulsion_moment_body_nm.x(), 0.0);
   // In trim the aileron holds the propeller's torque (aileron command into its rolling moment).
   EXPECT_LT(model->controls().aileron, 0.0);
 }
@@ -176,7 +176,7 @@ TEST(AircraftModel, GustRatesSubtractFromTheBodyRatesInTheAerodynamics) {
   ASSERT_TRUE(Trim(*model).solve(cruise("c172.yaml")).converged);
   for (int i = 0; i < 100; ++i) model->step(0.02);
   const AircraftOutputs& o = model->outputs();
-  ASSERT_GT(o.gust_rates_b_rps.norm(), 1e-4);
+  ASSERT_GT(o.gust_rates_body_radps.norm(), 1e-4);
   Aerodynamics aero(model->pack());
   Aerodynamics::Inputs in;
   in.alpha_rad = o.alpha_rad;
@@ -190,9 +190,9 @@ TEST(AircraftModel, GustRatesSubtractFromTheBodyRatesInTheAerodynamics) {
   in.flap_norm = o.flap_norm;
   in.gear_norm = o.gear_norm;
   in.aero_rp_height_agl_m = 1e6;
-  in.omega_air_b = o.omega_b_wrt_earth_rps - o.gust_rates_b_rps;
+  in.omega_air_body = o.omega_body_wrt_earth_radps - o.gust_rates_body_radps;
   EXPECT_NEAR(aero.compute(in, false).Cl, o.aero.Cl, 1e-12);
-  in.omega_air_b = o.omega_b_wrt_earth_rps;
+  in.omega_air_body = o.omega_body_wrt_earth_radps;
   EXPECT_GT(std::abs(aero.compute(in, false).Cl - o.aero.Cl), 1e-6);
 }
 
@@ -325,7 +325,7 @@ TEST(AircraftModel, SubstepsEqualShorterFrames) {
     b->step(0.01);
   }
   EXPECT_EQ(a->outputs().geodetic.alt_m, b->outputs().geodetic.alt_m);
-  EXPECT_EQ(a->outputs().omega_b_rps, b->outputs().omega_b_rps);
+  EXPECT_EQ(a->outputs().omega_body_radps, b->outputs().omega_body_radps);
   EXPECT_NEAR(a->time_s(), 4.0, 1e-12);
 }
 
@@ -343,7 +343,7 @@ TEST(AircraftModel, TurbulenceIsRepeatableForASeed) {
   };
   const AircraftOutputs a = run(11), b = run(11), c = run(12);
   EXPECT_EQ(a.geodetic.alt_m, b.geodetic.alt_m);
-  EXPECT_EQ(a.omega_b_rps, b.omega_b_rps);
+  EXPECT_EQ(a.omega_body_radps, b.omega_body_radps);
   EXPECT_EQ(a.gust_ned_mps, b.gust_ned_mps);
   EXPECT_NE(a.geodetic.alt_m, c.geodetic.alt_m);
   EXPECT_GT(a.gust_ned_mps.norm(), 0.0);

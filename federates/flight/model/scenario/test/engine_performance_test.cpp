@@ -201,7 +201,7 @@ FlownRoll fly_takeoff(const AircraftPack& pack, double flaps_norm, double rotate
     if (track.norm() < 1e-3) continue;
     const Eigen::Vector3d along = track.normalized();
     const double resistance_n =
-        -along.dot(now.ned_from_body * (now.aero_force_b_n + now.gear_force_b_n));
+        -along.dot(now.ned_from_body * (now.aero_force_body_n + now.gear_force_body_n));
     const double airspeed = now.tas_mps;
     const double rho = now.density_kgpm3;
     const double thrust_n =

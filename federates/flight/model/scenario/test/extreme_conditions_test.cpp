@@ -43,16 +43,16 @@ const char* name_of(Scenario s) {
 bool all_finite(const AircraftOutputs& o) {
   bool ok = std::isfinite(o.geodetic.lat_rad) && std::isfinite(o.geodetic.lon_rad) &&
             std::isfinite(o.geodetic.alt_m) && o.position_ecef_m.allFinite() &&
-            o.velocity_ned_mps.allFinite() && o.velocity_b_mps.allFinite() &&
-            o.q_ned_to_body.allFinite() && std::isfinite(o.euler.phi_rad) &&
+            o.velocity_ned_mps.allFinite() && o.velocity_body_mps.allFinite() &&
+            o.q_ned_from_body.allFinite() && std::isfinite(o.euler.phi_rad) &&
             std::isfinite(o.euler.theta_rad) && std::isfinite(o.euler.psi_rad) &&
-            o.omega_b_rps.allFinite() && o.omega_dot_b_rps2.allFinite() &&
-            o.acceleration_b_mps2.allFinite() && o.specific_force_eye_b_mps2.allFinite() &&
+            o.omega_body_radps.allFinite() && o.omega_dot_body_radps2.allFinite() &&
+            o.acceleration_body_mps2.allFinite() && o.specific_force_eye_body_mps2.allFinite() &&
             std::isfinite(o.tas_mps) && std::isfinite(o.cas_mps) && std::isfinite(o.eas_mps) &&
             std::isfinite(o.mach) && std::isfinite(o.alpha_rad) && std::isfinite(o.beta_rad) &&
             std::isfinite(o.alpha_dot_radps) && std::isfinite(o.beta_dot_radps) &&
-            std::isfinite(o.qbar_pa) && o.total_force_b_n.allFinite() &&
-            o.total_moment_b_nm.allFinite() && std::isfinite(o.mass_kg) &&
+            std::isfinite(o.qbar_pa) && o.total_force_body_n.allFinite() &&
+            o.total_moment_body_nm.allFinite() && std::isfinite(o.mass_kg) &&
             std::isfinite(o.total_thrust_n);
   for (const EngineOutputs& e : o.engines) {
     ok = ok && std::isfinite(e.thrust_n) && std::isfinite(e.rpm) && std::isfinite(e.n1_pct) &&
@@ -90,7 +90,7 @@ TEST_P(ExtremeConditions, NeverNaNNeverADroppedStep) {
       break;
     case Scenario::kZeroAirspeed:
       ic.velocity_mps.setZero();
-      ic.omega_b_rps.setZero();
+      ic.omega_body_radps.setZero();
       controls.set_throttle(0.0);
       break;
     case Scenario::kGroundAtSpeed:

@@ -66,7 +66,7 @@ TEST_P(LongitudinalModes, DoubletShowsShortPeriodAndPhugoidInTheirBands) {
     if (t >= start_s + b.doublet_half_s && t < release_s) c.elevator -= b.doublet_amplitude;
     model->set_controls(c);
     model->step(dt);
-    pitch_rate.push_back(model->outputs().omega_b_rps.y());
+    pitch_rate.push_back(model->outputs().omega_body_radps.y());
     airspeed.push_back(model->outputs().tas_mps);
   }
 

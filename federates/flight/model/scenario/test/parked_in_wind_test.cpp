@@ -52,9 +52,9 @@ double fastest_wheel_mps(const AircraftModel& model) {
   const auto& contacts = model.pack().landing_gear.contacts;
   for (const GearContactSpec& c : contacts) {
     if (c.type != ContactType::wheel) continue;
-    const Eigen::Vector3d arm_b = c.position_m - o.cg_m;
+    const Eigen::Vector3d arm_body = c.position_m - o.cg_m;
     const Eigen::Vector3d v_ned =
-        o.velocity_ned_mps + o.ned_from_body * o.omega_b_wrt_earth_rps.cross(arm_b);
+        o.velocity_ned_mps + o.ned_from_body * o.omega_body_wrt_earth_radps.cross(arm_body);
     fastest = std::max(fastest, std::hypot(v_ned.x(), v_ned.y()));
   }
   return fastest;
@@ -141,8 +141,8 @@ TEST_P(ParkedInWind, WindForceOnTheParkedAircraftIsSmallAgainstItsWeight) {
     const double weight_n = o.mass_kg * kG0;
     const double qbar_s = o.qbar_pa * model->pack().geometry.wing_area_m2;
     EXPECT_NEAR(o.qbar_pa, 0.5 * o.density_kgpm3 * 100.0, 1e-9);
-    EXPECT_LT(o.aero_force_b_n.norm(), 0.05 * weight_n);
-    EXPECT_LT(o.aero_force_b_n.norm(), 2.0 * qbar_s);  // a coefficient below 2 on the wing area
+    EXPECT_LT(o.aero_force_body_n.norm(), 0.05 * weight_n);
+    EXPECT_LT(o.aero_force_body_n.norm(), 2.0 * qbar_s);  // a coefficient below 2 on the wing area
   }
 }
 
@@ -182,7 +182,7 @@ TEST(ParkedInWind, BrakesReleasedInAStrongTailwindItRolls) {
       if (speed_at_start >= 0.0) {
         const Eigen::Vector3d path = v_ground.normalized();
         const Eigen::Vector3d push_ned =
-            o.ned_from_body * (o.aero_force_b_n + o.propulsion_force_b_n);
+            o.ned_from_body * (o.aero_force_body_n + o.propulsion_force_body_n);
         predicted_gain += (push_ned.dot(path) - rolling_friction * o.gear_normal_force_n) /
                           o.mass_kg / kRateHz;
       }

@@ -59,14 +59,14 @@ TEST_P(TrimConverges, EveryResidualWithinItsTolerance) {
   EXPECT_LE(t.iterations, 20);
   // The equilibrium checked from the forces and moments on the trimmed aircraft, not from the
   // trim's own residuals: Newton's and Euler's laws on the flat earth (NED inertial),
-  //   F / m + g_b - omega x v = 0,   I^-1 (M - omega x (I omega + h_rotor)) = 0,
+  //   F / m + g_body - omega x v = 0,   I^-1 (M - omega x (I omega + h_rotor)) = 0,
   // with the weight, the aerodynamic, propulsive and gear forces, the centripetal term of a
-  // turn and the gyroscopic term of the spinning propeller, h_rotor = sense I_prop Omega x_b.
+  // turn and the gyroscopic term of the spinning propeller, h_rotor = sense I_prop Omega x_body.
   {
     const AircraftOutputs& o = model->outputs();
-    const Eigen::Vector3d g_b = o.ned_from_body.transpose() * Eigen::Vector3d(0.0, 0.0, kG0);
+    const Eigen::Vector3d g_body = o.ned_from_body.transpose() * Eigen::Vector3d(0.0, 0.0, kG0);
     const Eigen::Vector3d linear =
-        o.total_force_b_n / o.mass_kg + g_b - o.omega_b_rps.cross(o.velocity_b_mps);
+        o.total_force_body_n / o.mass_kg + g_body - o.omega_body_radps.cross(o.velocity_body_mps);
     Eigen::Vector3d h_rotor = Eigen::Vector3d::Zero();
     for (std::size_t e = 0; e < model->pack().engines.size(); ++e) {
       const EngineSpec& spec = model->pack().engines[e];
@@ -77,7 +77,7 @@ TEST_P(TrimConverges, EveryResidualWithinItsTolerance) {
     }
     const Eigen::Vector3d angular =
         o.inertia_kgm2.inverse() *
-        (o.total_moment_b_nm - o.omega_b_rps.cross(o.inertia_kgm2 * o.omega_b_rps + h_rotor));
+        (o.total_moment_body_nm - o.omega_body_radps.cross(o.inertia_kgm2 * o.omega_body_radps + h_rotor));
     for (int k = 0; k < 3; ++k) {
       EXPECT_LE(std::abs(linear[k]), 1e-4) << c.name << " force balance, axis " << k;
       EXPECT_LE(std::abs(angular[k]), 1e-5) << c.name << " moment balance, axis " << k;
@@ -104,10 +104,10 @@ TEST_P(TrimConverges, EveryResidualWithinItsTolerance) {
     EXPECT_NEAR(t.turn_rate_radps, kG0 * std::tan(c.request.bank_rad) / o.tas_mps,
                 0.01 * t.turn_rate_radps);
     EXPECT_NEAR(o.load_factor_z, 1.0 / std::cos(c.request.bank_rad), 0.01);
-    EXPECT_LE(std::abs(o.specific_force_cg_b_mps2.y()), 1e-4);
+    EXPECT_LE(std::abs(o.specific_force_cg_body_mps2.y()), 1e-4);
   } else {
     EXPECT_NEAR(o.euler.phi_rad, 0.0, 1e-12);
-    EXPECT_NEAR(o.omega_b_rps.norm(), 0.0, 1e-12);  // flat earth: straight flight, no rotation
+    EXPECT_NEAR(o.omega_body_radps.norm(), 0.0, 1e-12);  // flat earth: straight flight, no rotation
     EXPECT_NEAR(t.theta_rad, t.alpha_rad + c.request.flight_path_rad, 1e-3);
   }
   // Within the pack's angle-of-attack limits and not stalled.

@@ -48,15 +48,15 @@ TEST(LandingGear, NoForceWhenAirborne) {
   LandingGear::Inputs in;
   in.contacts = kin;
   gear.step(0.02, in);
-  EXPECT_EQ(gear.outputs().force_b_n, Eigen::Vector3d::Zero());
-  EXPECT_EQ(gear.outputs().moment_datum_b_nm, Eigen::Vector3d::Zero());
+  EXPECT_EQ(gear.outputs().force_body_n, Eigen::Vector3d::Zero());
+  EXPECT_EQ(gear.outputs().moment_datum_body_nm, Eigen::Vector3d::Zero());
   EXPECT_FALSE(gear.outputs().weight_on_wheels);
   // Same with the runway at 500 m and the wheels at 500.5 m.
   for (auto& k : kin) k.position_ned_m.z() = -500.5;
   in.runway_elevation_m = 500.0;
   gear.step(0.02, in);
   EXPECT_FALSE(gear.outputs().weight_on_wheels);
-  EXPECT_EQ(gear.outputs().force_b_n, Eigen::Vector3d::Zero());
+  EXPECT_EQ(gear.outputs().force_body_n, Eigen::Vector3d::Zero());
 }
 
 TEST(LandingGear, StaticDeflectionUnderWeightIsMgOverK) {
@@ -67,8 +67,8 @@ TEST(LandingGear, StaticDeflectionUnderWeightIsMgOverK) {
       evaluate_single(main, Eigen::Vector3d(0.0, 0.0, deflection), Eigen::Vector3d::Zero());
   EXPECT_TRUE(out.weight_on_wheels);
   EXPECT_NEAR(out.contacts[0].normal_force_n, supported_kg * kG, 1e-9);
-  EXPECT_NEAR(out.force_b_n.z(), -supported_kg * kG, 1e-9);  // up in level body axes
-  EXPECT_NEAR(out.force_b_n.head<2>().norm(), 0.0, 1e-12);
+  EXPECT_NEAR(out.force_body_n.z(), -supported_kg * kG, 1e-9);  // up in level body axes
+  EXPECT_NEAR(out.force_body_n.head<2>().norm(), 0.0, 1e-12);
 }
 
 TEST(LandingGear, DampingActsOnCompressionRateWithSeparateRebound) {
@@ -90,18 +90,18 @@ TEST(LandingGear, RollingAndBrakingFrictionOpposeMotion) {
   const double n = main.spring_npm * 0.05;
   for (double v : {10.0, -10.0}) {
     const LandingGear::Outputs rolling = evaluate_single(main, p, Eigen::Vector3d(v, 0, 0));
-    EXPECT_NEAR(rolling.force_b_n.x(), -std::copysign(main.rolling_friction * n, v), 1e-9);
-    EXPECT_NEAR(rolling.force_b_n.y(), 0.0, 1e-9);
+    EXPECT_NEAR(rolling.force_body_n.x(), -std::copysign(main.rolling_friction * n, v), 1e-9);
+    EXPECT_NEAR(rolling.force_body_n.y(), 0.0, 1e-9);
     // Full brake: mu_static N (0.8 N); half brake half way between rolling and full.
     const LandingGear::Outputs braked = evaluate_single(main, p, Eigen::Vector3d(v, 0, 0), 1.0);
-    EXPECT_NEAR(braked.force_b_n.x(), -std::copysign(main.static_friction * n, v), 1e-9);
+    EXPECT_NEAR(braked.force_body_n.x(), -std::copysign(main.static_friction * n, v), 1e-9);
     const LandingGear::Outputs half = evaluate_single(main, p, Eigen::Vector3d(v, 0, 0), 0.5);
-    EXPECT_NEAR(half.force_b_n.x(),
+    EXPECT_NEAR(half.force_body_n.x(),
                 -std::copysign(0.5 * (main.rolling_friction + main.static_friction) * n, v), 1e-9);
   }
   // Standing still: no friction at all (inside the blend band it grows with speed).
-  EXPECT_NEAR(evaluate_single(main, p, Eigen::Vector3d::Zero(), 1.0).force_b_n.x(), 0.0, 1e-12);
-  const double slow = evaluate_single(main, p, Eigen::Vector3d(0.1, 0, 0), 1.0).force_b_n.x();
+  EXPECT_NEAR(evaluate_single(main, p, Eigen::Vector3d::Zero(), 1.0).force_body_n.x(), 0.0, 1e-12);
+  const double slow = evaluate_single(main, p, Eigen::Vector3d(0.1, 0, 0), 1.0).force_body_n.x();
   EXPECT_NEAR(slow, -main.static_friction * n * 0.1 / 0.25, 1e-9);
 }
 
@@ -112,13 +112,13 @@ TEST(LandingGear, CorneringFrictionFollowsTheSlipAngleLaw) {
   // 20 m/s forward, 0.7 m/s to the right: slip 2.0 deg, linear part of the law.
   const double slip = std::atan2(0.7, 20.0);
   LandingGear::Outputs out = evaluate_single(main, p, Eigen::Vector3d(20.0, 0.7, 0.0));
-  EXPECT_NEAR(out.force_b_n.y(),
+  EXPECT_NEAR(out.force_body_n.y(),
               -main.dynamic_friction * slip / main.cornering_saturation_slip_rad * n, 1e-9);
   // Sliding sideways at 30 deg: saturated at mu_dynamic, total within the friction circle.
   out = evaluate_single(
       main, p, Eigen::Vector3d(10.0 * std::cos(30 * kDeg), -10.0 * std::sin(30 * kDeg), 0));
-  EXPECT_NEAR(out.force_b_n.y(), main.dynamic_friction * n, 1e-9);
-  EXPECT_LE(out.force_b_n.head<2>().norm(), main.static_friction * n + 1e-9);
+  EXPECT_NEAR(out.force_body_n.y(), main.dynamic_friction * n, 1e-9);
+  EXPECT_LE(out.force_body_n.head<2>().norm(), main.static_friction * n + 1e-9);
 }
 
 // One braked main wheel, level, heading north, with the executive's band floor and damping
@@ -152,11 +152,11 @@ TEST(LandingGear, SideFrictionNearAStandstillKeepsTheBandSlope) {
   const double band = 0.25;
   for (double v_roll : {0.0, 0.01, 0.1, 1.0}) {
     const LandingGear::Outputs out = evaluate_single(main, p, Eigen::Vector3d(v_roll, 1e-3, 0));
-    EXPECT_NEAR(out.force_b_n.y(), -main.dynamic_friction * n * 1e-3 / band, 1e-9) << v_roll;
+    EXPECT_NEAR(out.force_body_n.y(), -main.dynamic_friction * n * 1e-3 / band, 1e-9) << v_roll;
   }
   // Rolling at 20 m/s the slip-angle law governs alone (as in the cornering test above).
   const double slip = std::atan2(0.7, 20.0);
-  EXPECT_NEAR(evaluate_single(main, p, Eigen::Vector3d(20.0, 0.7, 0)).force_b_n.y(),
+  EXPECT_NEAR(evaluate_single(main, p, Eigen::Vector3d(20.0, 0.7, 0)).force_body_n.y(),
               -main.dynamic_friction * slip / main.cornering_saturation_slip_rad * n, 1e-9);
 }
 
@@ -166,10 +166,10 @@ TEST(LandingGear, ExecutiveFloorWidensTheFrictionBand) {
   const Eigen::Vector3d slow(0.1, 0.0, 0.0);
   const double n = main.spring_npm * 0.05;
   // A floor above the gear's own 0.25 m/s band widens it; one below, or NaN, changes nothing.
-  EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, 0.5, {}).force_b_n.x(),
+  EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, 0.5, {}).force_body_n.x(),
               -main.static_friction * n * 0.1 / 0.5, 1e-9);
   for (double floor : {0.0, 0.1, std::nan("")}) {
-    EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, floor, {}).force_b_n.x(),
+    EXPECT_NEAR(evaluate_with(main, p, slow, 1.0, floor, {}).force_body_n.x(),
                 -main.static_friction * n * 0.1 / 0.25, 1e-9)
         << floor;
   }
@@ -206,7 +206,7 @@ TEST(LandingGear, StructuralContactSlidesAgainstItsVelocity) {
   const Eigen::Vector3d v(6.0, -8.0, 0.0);
   const LandingGear::Outputs out = evaluate_single(skid, Eigen::Vector3d(0, 0, 0.01), v);
   const double n = skid.spring_npm * 0.01;
-  EXPECT_TRUE((out.force_b_n.head<2>() + 0.2 * n * v.head<2>() / 10.0).norm() < 1e-9);
+  EXPECT_TRUE((out.force_body_n.head<2>() + 0.2 * n * v.head<2>() / 10.0).norm() < 1e-9);
   EXPECT_FALSE(out.weight_on_wheels);  // structure is not a wheel
 }
 
@@ -224,13 +224,13 @@ TEST(LandingGear, NoseWheelSteeringYawsTowardTheCommand) {
   in.steering = 1.0;  // 10 deg right
   gear.step(0.0, in);
   EXPECT_NEAR(gear.outputs().contacts[0].steer_angle_rad, 10.0 * kDeg, 1e-12);
-  EXPECT_GT(gear.outputs().contacts[0].force_b_n.y(), 0.0);
+  EXPECT_GT(gear.outputs().contacts[0].force_body_n.y(), 0.0);
   const Eigen::Vector3d moment_cg =
-      gear.outputs().moment_datum_b_nm - cg.cross(gear.outputs().force_b_n);
+      gear.outputs().moment_datum_body_nm - cg.cross(gear.outputs().force_body_n);
   EXPECT_GT(moment_cg.z(), 0.0);  // nose right
   in.steering = -1.0;
   gear.step(0.0, in);
-  EXPECT_LT((gear.outputs().moment_datum_b_nm - cg.cross(gear.outputs().force_b_n)).z(), 0.0);
+  EXPECT_LT((gear.outputs().moment_datum_body_nm - cg.cross(gear.outputs().force_body_n)).z(), 0.0);
 }
 
 TEST(LandingGear, RetractedGearMakesNoContact) {
@@ -242,7 +242,7 @@ TEST(LandingGear, RetractedGearMakesNoContact) {
   in.gear_down = false;
   gear.step(0.0, in);
   EXPECT_FALSE(gear.outputs().weight_on_wheels);
-  EXPECT_EQ(gear.outputs().force_b_n, Eigen::Vector3d::Zero());
+  EXPECT_EQ(gear.outputs().force_body_n, Eigen::Vector3d::Zero());
   in.gear_down = true;
   gear.step(0.0, in);
   EXPECT_TRUE(gear.outputs().weight_on_wheels);
@@ -260,8 +260,8 @@ struct RigidAircraft {
 
   struct State {
     Eigen::Vector3d position_ned, velocity_ned;
-    Eigen::Quaterniond body_to_ned;
-    Eigen::Vector3d omega_b;
+    Eigen::Quaterniond ned_from_body;
+    Eigen::Vector3d omega_body;
   };
   struct Rates {
     Eigen::Vector3d position, velocity;
@@ -278,22 +278,22 @@ struct RigidAircraft {
         kin(gear_params.contacts.size()) {}
 
   Rates rates(const State& s) {
-    const Eigen::Matrix3d ned_to_body = s.body_to_ned.toRotationMatrix().transpose();
-    LandingGear::contact_kinematics(gear.params(), s.position_ned, s.velocity_ned, ned_to_body,
-                                    s.omega_b, cg_m, kin);
+    const Eigen::Matrix3d body_from_ned = s.ned_from_body.toRotationMatrix().transpose();
+    LandingGear::contact_kinematics(gear.params(), s.position_ned, s.velocity_ned, body_from_ned,
+                                    s.omega_body, cg_m, kin);
     LandingGear::Inputs in;
     in.contacts = kin;
-    in.dcm_ned_to_body = ned_to_body;
+    in.body_from_ned = body_from_ned;
     in.brake_left = in.brake_right = brakes;
     gear.step(0.0, in);
-    const Eigen::Vector3d force_b = gear.outputs().force_b_n;
-    const Eigen::Vector3d moment_cg = gear.outputs().moment_datum_b_nm - cg_m.cross(force_b);
+    const Eigen::Vector3d force_body = gear.outputs().force_body_n;
+    const Eigen::Vector3d moment_cg = gear.outputs().moment_datum_body_nm - cg_m.cross(force_body);
     Rates r;
     r.position = s.velocity_ned;
-    r.velocity = ned_to_body.transpose() * force_b / mass_kg + Eigen::Vector3d(0, 0, kG);
-    const Eigen::Quaterniond w(0.0, s.omega_b.x(), s.omega_b.y(), s.omega_b.z());
-    r.quaternion = 0.5 * (s.body_to_ned * w).coeffs();
-    r.omega = inertia_kgm2.inverse() * (moment_cg - s.omega_b.cross(inertia_kgm2 * s.omega_b));
+    r.velocity = body_from_ned.transpose() * force_body / mass_kg + Eigen::Vector3d(0, 0, kG);
+    const Eigen::Quaterniond w(0.0, s.omega_body.x(), s.omega_body.y(), s.omega_body.z());
+    r.quaternion = 0.5 * (s.ned_from_body * w).coeffs();
+    r.omega = inertia_kgm2.inverse() * (moment_cg - s.omega_body.cross(inertia_kgm2 * s.omega_body));
     return r;
   }
 
@@ -301,9 +301,9 @@ struct RigidAircraft {
     State n;
     n.position_ned = s.position_ned + h * r.position;
     n.velocity_ned = s.velocity_ned + h * r.velocity;
-    n.body_to_ned.coeffs() = s.body_to_ned.coeffs() + h * r.quaternion;
-    n.body_to_ned.normalize();
-    n.omega_b = s.omega_b + h * r.omega;
+    n.ned_from_body.coeffs() = s.ned_from_body.coeffs() + h * r.quaternion;
+    n.ned_from_body.normalize();
+    n.omega_body = s.omega_body + h * r.omega;
     return n;
   }
 
@@ -329,8 +329,8 @@ struct RigidAircraft {
     State s;
     s.position_ned = Eigen::Vector3d(0, 0, -lowest - gap_m);
     s.velocity_ned.setZero();
-    s.body_to_ned.setIdentity();
-    s.omega_b.setZero();
+    s.ned_from_body.setIdentity();
+    s.omega_body.setZero();
     return s;
   }
 };
@@ -362,19 +362,19 @@ TEST_P(GearSettling, SettlesAtTheStaticDeflectionOfEachGear) {
   RigidAircraft::State s = ac.resting_state(0.05);  // dropped from 5 cm
   for (int i = 0; i < static_cast<int>(20.0 / dt); ++i) {
     ac.rk4(s, dt);
-    ASSERT_TRUE(s.position_ned.allFinite() && s.omega_b.allFinite()) << "diverged at step " << i;
+    ASSERT_TRUE(s.position_ned.allFinite() && s.omega_body.allFinite()) << "diverged at step " << i;
   }
   EXPECT_LT(s.velocity_ned.norm(), 1e-4);
-  EXPECT_LT(s.omega_b.norm(), 1e-4);
+  EXPECT_LT(s.omega_body.norm(), 1e-4);
   const LandingGear::Outputs& out = ac.gear.outputs();
   EXPECT_TRUE(out.weight_on_wheels);
 
   // Statics with the settled geometry: vertical loads balance the weight and its pitching
   // moment about the CG (lever arms: the ground points' north offsets from the CG).
-  const Eigen::Matrix3d body_to_ned = s.body_to_ned.toRotationMatrix();
+  const Eigen::Matrix3d ned_from_body = s.ned_from_body.toRotationMatrix();
   auto north_arm = [&](std::size_t i) {
-    const Eigen::Vector3d arm_b = ac.gear.params().contacts[i].position_m - ac.cg_m;
-    return (body_to_ned * arm_b).x();
+    const Eigen::Vector3d arm_body = ac.gear.params().contacts[i].position_m - ac.cg_m;
+    return (ned_from_body * arm_body).x();
   };
   const double weight = ac.mass_kg * kG;
   const double d_nose = north_arm(0), d_main = 0.5 * (north_arm(1) + north_arm(2));
@@ -410,9 +410,9 @@ TEST_P(GearHardLanding, HighSinkRateStaysFiniteAndSettles) {
   double peak_force = 0.0;
   for (int i = 0; i < static_cast<int>(30.0 / dt); ++i) {
     ac.rk4(s, dt);
-    ASSERT_TRUE(s.position_ned.allFinite() && s.velocity_ned.allFinite() && s.omega_b.allFinite());
-    ASSERT_TRUE(ac.gear.outputs().force_b_n.allFinite());
-    peak_force = std::max(peak_force, ac.gear.outputs().force_b_n.norm());
+    ASSERT_TRUE(s.position_ned.allFinite() && s.velocity_ned.allFinite() && s.omega_body.allFinite());
+    ASSERT_TRUE(ac.gear.outputs().force_body_n.allFinite());
+    peak_force = std::max(peak_force, ac.gear.outputs().force_body_n.norm());
   }
   EXPECT_GT(peak_force, 2.0 * ac.mass_kg * kG);   // a hard landing
   EXPECT_LT(std::abs(s.velocity_ned.z()), 1e-3);  // back at rest vertically
@@ -429,12 +429,12 @@ TEST(LandingGear, ExtremePenetrationIsFinite) {
   const LandingGear::Outputs out =
       evaluate_single(reference::b737_gear().contacts[1], Eigen::Vector3d(0, 0, 50.0),
                       Eigen::Vector3d(80, 20, 200), 1.0);
-  EXPECT_TRUE(out.force_b_n.allFinite());
-  EXPECT_TRUE(out.moment_datum_b_nm.allFinite());
+  EXPECT_TRUE(out.force_body_n.allFinite());
+  EXPECT_TRUE(out.moment_datum_body_nm.allFinite());
   const LandingGear::Outputs nan_in =
       evaluate_single(reference::b737_gear().contacts[1], Eigen::Vector3d(0, 0, std::nan("")),
                       Eigen::Vector3d::Zero());
-  EXPECT_TRUE(nan_in.force_b_n.allFinite());
+  EXPECT_TRUE(nan_in.force_body_n.allFinite());
   EXPECT_FALSE(nan_in.weight_on_wheels);
 }
 

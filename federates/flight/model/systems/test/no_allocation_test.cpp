@@ -43,7 +43,7 @@ TEST(NoAllocation, ModelStepsDoNotAllocate) {
   // Inputs are prepared before counting.
   PistonPowerplant::Inputs piston_in;
   piston_in.throttle = 1.0;
-  piston_in.air_velocity_b_mps = Eigen::Vector3d(40.0, 1.0, 2.0);
+  piston_in.air_velocity_body_mps = Eigen::Vector3d(40.0, 1.0, 2.0);
   Turbofan::Inputs fan_in;
   fan_in.throttle = 0.8;
   const std::array<double, 2> flows = {0.5, 0.6};

@@ -20,7 +20,7 @@ using reference::kHp;
 PistonPowerplant::Inputs at_airspeed(double tas_mps, double throttle = 1.0) {
   PistonPowerplant::Inputs in;
   in.throttle = throttle;
-  in.air_velocity_b_mps = Eigen::Vector3d(tas_mps, 0.0, 0.0);
+  in.air_velocity_body_mps = Eigen::Vector3d(tas_mps, 0.0, 0.0);
   return in;
 }
 
@@ -132,7 +132,7 @@ TEST(PistonPowerplant, FailedEngineWindmillsToDragNotThrust) {
     run(pp, in, 60.0, 0.02);
     const PistonPowerplant::Outputs& out = pp.outputs();
     EXPECT_LT(out.thrust_n, 0.0) << v << " m/s";
-    EXPECT_LT(out.force_b_n.x(), 0.0);
+    EXPECT_LT(out.force_body_n.x(), 0.0);
     EXPECT_EQ(out.fuel_flow_kgps, 0.0);
     EXPECT_TRUE(std::isfinite(out.engine_rpm));
     EXPECT_LT(out.engine_rpm, 2400.0);
@@ -147,13 +147,13 @@ TEST(PistonPowerplant, StandstillAndStartAreFinite) {
   run(pp, off, 5.0, 0.02);
   EXPECT_EQ(pp.outputs().engine_rpm, 0.0);  // friction holds a stopped engine
   EXPECT_EQ(pp.outputs().thrust_n, 0.0);
-  EXPECT_TRUE(pp.outputs().moment_datum_b_nm.allFinite());
+  EXPECT_TRUE(pp.outputs().moment_datum_body_nm.allFinite());
   // Running flag on at zero rpm: the engine picks up and settles at idle (no starter model).
   PistonPowerplant::Inputs idle = at_airspeed(0.0, 0.0);
   run(pp, idle, 30.0, 0.02);
   EXPECT_GT(pp.outputs().engine_rpm, 500.0);
   EXPECT_LT(pp.outputs().engine_rpm, 1000.0);
-  EXPECT_TRUE(pp.outputs().force_b_n.allFinite());
+  EXPECT_TRUE(pp.outputs().force_body_n.allFinite());
 }
 
 TEST(PistonPowerplant, ForceActsAlongTheThrustLineAndTorqueRollsAgainstRotation) {
@@ -163,16 +163,16 @@ TEST(PistonPowerplant, ForceActsAlongTheThrustLineAndTorqueRollsAgainstRotation)
   pp.reset(2000.0);
   run(pp, at_airspeed(0.0), 10.0, 0.02);
   const PistonPowerplant::Outputs& out = pp.outputs();
-  const Eigen::Vector3d axis = params.thrust_line.axis_b();
-  EXPECT_NEAR(out.force_b_n.dot(axis), out.thrust_n, 1e-9);
-  EXPECT_NEAR(out.force_b_n.cross(axis).norm(), 0.0, 1e-9);
-  EXPECT_LT(out.force_b_n.z(), 0.0);  // nose-up thrust line pushes up
+  const Eigen::Vector3d axis = params.thrust_line.axis_body();
+  EXPECT_NEAR(out.force_body_n.dot(axis), out.thrust_n, 1e-9);
+  EXPECT_NEAR(out.force_body_n.cross(axis).norm(), 0.0, 1e-9);
+  EXPECT_LT(out.force_body_n.z(), 0.0);  // nose-up thrust line pushes up
   const Eigen::Vector3d reaction =
-      out.moment_datum_b_nm - params.thrust_line.position_m.cross(out.force_b_n);
+      out.moment_datum_body_nm - params.thrust_line.position_m.cross(out.force_body_n);
   // Clockwise-from-behind propeller: the air's torque rolls the aircraft left (negative).
   EXPECT_NEAR(reaction.dot(axis), -out.propeller_torque_nm, 1e-9);
   EXPECT_LT(reaction.x(), 0.0);
-  EXPECT_NEAR(out.rotor_angular_momentum_b_kgm2ps.dot(axis),
+  EXPECT_NEAR(out.rotor_angular_momentum_body_kgm2ps.dot(axis),
               params.shaft_inertia_kgm2 * out.propeller_rpm * 2.0 * std::numbers::pi / 60.0, 1e-9);
 
   params.rotation_sense = -1;
@@ -180,8 +180,8 @@ TEST(PistonPowerplant, ForceActsAlongTheThrustLineAndTorqueRollsAgainstRotation)
   left_hand.reset(2000.0);
   run(left_hand, at_airspeed(0.0), 10.0, 0.02);
   const Eigen::Vector3d reaction_lh =
-      left_hand.outputs().moment_datum_b_nm -
-      params.thrust_line.position_m.cross(left_hand.outputs().force_b_n);
+      left_hand.outputs().moment_datum_body_nm -
+      params.thrust_line.position_m.cross(left_hand.outputs().force_body_n);
   EXPECT_GT(reaction_lh.x(), 0.0);
 }
 
@@ -234,7 +234,7 @@ TEST(PistonPowerplant, FeatheringStopsAFailedEngine) {
   run(pp, in, 30.0, 0.02);
   EXPECT_NEAR(pp.outputs().blade_angle_rad, 85.0 * kDeg, 1e-12);
   EXPECT_EQ(pp.outputs().engine_rpm, 0.0);
-  EXPECT_TRUE(pp.outputs().force_b_n.allFinite());
+  EXPECT_TRUE(pp.outputs().force_body_n.allFinite());
   in.feather = false;  // unfeathering returns the blades into the governed range
   run(pp, in, 10.0, 0.02);
   EXPECT_LE(pp.outputs().blade_angle_rad, 30.0 * kDeg + 1e-12);

@@ -174,10 +174,10 @@ TEST(Turbofan, OffCentreEngineYawsTowardTheOtherSide) {
   run(engine, flight(1.0, 0.0, 0.0), 30.0);
   const Turbofan::Outputs& out = engine.outputs();
   const Eigen::Vector3d r = reference::cfm56().thrust_line.position_m;
-  EXPECT_NEAR(out.force_b_n.x(), out.thrust_n, 1e-9);
-  EXPECT_NEAR((out.moment_datum_b_nm - r.cross(out.force_b_n)).norm(), 0.0, 1e-6);
-  EXPECT_NEAR(out.moment_datum_b_nm.z(), -r.y() * out.thrust_n, 1e-6);
-  EXPECT_GT(out.moment_datum_b_nm.z(), 0.0);  // left engine alone: nose right
+  EXPECT_NEAR(out.force_body_n.x(), out.thrust_n, 1e-9);
+  EXPECT_NEAR((out.moment_datum_body_nm - r.cross(out.force_body_n)).norm(), 0.0, 1e-6);
+  EXPECT_NEAR(out.moment_datum_body_nm.z(), -r.y() * out.thrust_n, 1e-6);
+  EXPECT_GT(out.moment_datum_body_nm.z(), 0.0);  // left engine alone: nose right
 }
 
 TEST(Turbofan, ValidateNamesTheBadField) {

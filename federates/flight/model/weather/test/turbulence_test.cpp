@@ -55,8 +55,8 @@ GustSeries fly(Turbulence& turb, double tas_mps, double height_m, double dt_s, s
     run.u.push_back(out.gust_ned_mps.x());
     run.v.push_back(out.gust_ned_mps.y());
     run.w.push_back(out.gust_ned_mps.z());
-    run.p.push_back(out.gust_rates_b_radps.x());
-    run.q.push_back(out.gust_rates_b_radps.y());
+    run.p.push_back(out.gust_rates_body_radps.x());
+    run.q.push_back(out.gust_rates_body_radps.y());
   }
   return run;
 }
@@ -201,12 +201,12 @@ TEST(Turbulence, NoTurbulenceGivesZeroAndStandstillIsFinite) {
   for (int i = 0; i < 1000; ++i) {
     turb.step(0.02, in);
     ASSERT_TRUE(turb.outputs().gust_ned_mps.allFinite());
-    ASSERT_TRUE(turb.outputs().gust_rates_b_radps.allFinite());
+    ASSERT_TRUE(turb.outputs().gust_rates_body_radps.allFinite());
   }
   in.tas_mps = std::nan("");
   in.height_agl_m = std::nan("");
   turb.step(0.02, in);
-  EXPECT_TRUE(turb.outputs().gust_b_mps.allFinite());
+  EXPECT_TRUE(turb.outputs().gust_body_mps.allFinite());
 }
 
 TEST(Turbulence, ValidateNamesTheBadField) {
