@@ -11,7 +11,7 @@
 #include <string>
 
 #include "common/util/config_node.hpp"
-#include "flight/model/aircraft/test/flight_test_support.hpp"
+#include "flight/model/scenario/test/flight_test_support.hpp"
 
 namespace fedsim::flight {
 namespace {
