@@ -14,6 +14,8 @@ library only. Format (data/aircraft/README.md, "Calibration"):
         propeller:
           power_coefficient_factor: {value: ..., source: "..."}   (written as a block map)
           thrust_coefficient_factor: ...
+          factor_fade_start_advance_ratio: ...   (optional, with the next: the band over
+          factor_fade_end_advance_ratio: ...      which the two factors fade out; fedsim's)
 
 Every error names the file, the line and the field.
 """
@@ -24,14 +26,20 @@ import os
 
 FORMAT_VERSION = 1
 
-# What an overlay may set, per engine section, and the accepted range of each value: the
-# range fedsim's Propeller accepts (Propeller::kMinCoefficientFactor, kMaxCoefficientFactor).
+# What an overlay may set, per engine section, the accepted range of each value (the range
+# fedsim's Propeller accepts: Propeller::kMinCoefficientFactor, kMaxCoefficientFactor,
+# kMaxFadeAdvanceRatio) and the JSBSim element it replaces (None: fedsim's own).
 CALIBRATABLE = {
     "propeller": {
         "power_coefficient_factor": (0.1, 10.0, "cp_factor"),
         "thrust_coefficient_factor": (0.1, 10.0, "ct_factor"),
+        "factor_fade_start_advance_ratio": (0.0, 3.0, None),
+        "factor_fade_end_advance_ratio": (0.0, 3.0, None),
     },
 }
+
+# Settings that only come in pairs (start, end), with end > start.
+BANDS = (("propeller", "factor_fade_start_advance_ratio", "factor_fade_end_advance_ratio"),)
 
 
 class CalibrationError(ValueError):
@@ -203,6 +211,24 @@ def read_overlay(path, pack_name=None):
                 settings.append({"engine": engine, "section": section, "key": key,
                                  "value": float(value.value), "source": source,
                                  "line": value.line})
+            for band_section, start_key, end_key in BANDS:
+                if band_section != section:
+                    continue
+                start = keys.get(start_key)
+                end = keys.get(end_key)
+                section_field = prefix + section + "."
+                if (start is None) != (end is None):
+                    present, missing = (start_key, end_key) if end is None else (end_key, start_key)
+                    _fail(path, keys[present].line, section_field + present,
+                          "needs %s too (a band has two ends)" % missing)
+                if start is not None:
+                    start_value = next(s["value"] for s in settings
+                                       if s["engine"] == engine and s["key"] == start_key)
+                    end_setting = next(s for s in settings
+                                       if s["engine"] == engine and s["key"] == end_key)
+                    if not end_setting["value"] > start_value:
+                        _fail(path, end_setting["line"], section_field + end_key + ".value",
+                              "must exceed %s (%g)" % (start_key, start_value))
     return {"procedure": procedure, "settings": settings, "path": path}
 
 
@@ -249,10 +275,13 @@ def apply(overlay, sections, notes, commented):
             s["engine"], s["section"], s["key"], s["value"], name, s["source"])
         if replaced is not None:
             old = replaced.value if hasattr(replaced, "value") else replaced
-            note += " (replaces JSBSim's <%s> %g)" % (CALIBRATABLE[s["section"]][s["key"]][2], old)
+            jsbsim_name = CALIBRATABLE[s["section"]][s["key"]][2]
+            note += (" (replaces JSBSim's <%s> %g)" % (jsbsim_name, old) if jsbsim_name
+                     else " (replaces %g)" % old)
         engine[s["section"]] = insert_after(
             section, ("thrust_coefficient", "power_coefficient", "thrust_coefficient_factor",
-                      "power_coefficient_factor"),
+                      "power_coefficient_factor", "factor_fade_start_advance_ratio",
+                      "factor_fade_end_advance_ratio"),
             s["key"], commented(s["value"], "calibrated: " + name))
         notes.append(note)
     notes.append("calibration procedure (%s): %s" % (name, overlay["procedure"]))

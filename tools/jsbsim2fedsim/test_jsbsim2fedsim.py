@@ -279,6 +279,15 @@ engines:
         source: plain text is fine too
 """
 
+# A fade band appended to OVERLAY's propeller section (lines 14-19).
+FADE = """      factor_fade_start_advance_ratio:
+        value: 0.35
+        source: "end of the take-off roll"
+      factor_fade_end_advance_ratio:
+        value: 0.55
+        source: "below the cruise"
+"""
+
 
 class PropellerAndCalibrationTest(unittest.TestCase):
     def setUp(self):
@@ -400,13 +409,56 @@ class PropellerAndCalibrationTest(unittest.TestCase):
                           "engines.engine.piston", "unknown field")
         self.expect_error(base + "engines:\n  x: 1\n", 14, "engines", "duplicate key")
 
+    def test_fade_band_follows_the_factors_and_is_noted(self):
+        self.write_overlay(OVERLAY + FADE)
+        overlay = calibration.read_overlay(self.overlay, "testplane.yaml")
+        sections, notes = self.sections()
+        calibration.apply(overlay, sections, notes, jsbsim2fedsim.Commented)
+        prop = plain(sections["propulsion"]["engines"][0]["propeller"])
+        self.assertEqual(prop["factor_fade_start_advance_ratio"], 0.35)
+        self.assertEqual(prop["factor_fade_end_advance_ratio"], 0.55)
+        keys = list(prop)
+        at = keys.index("thrust_coefficient_factor")
+        self.assertEqual(keys[at + 1:at + 3], ["factor_fade_start_advance_ratio",
+                                               "factor_fade_end_advance_ratio"])
+        self.assertTrue(any("factor_fade_end_advance_ratio = 0.55" in n and "cruise" in n
+                            for n in notes))
+
+    def test_bad_fade_bands_fail_at_their_file_line_and_field(self):
+        field = "engines.engine.propeller."
+        # Lines: OVERLAY has 13, FADE starts on line 14 (start) and 17 (end), values 15 and 18.
+        self.expect_error(OVERLAY + FADE.replace("value: 0.55", "value: 0.35"), 18,
+                          field + "factor_fade_end_advance_ratio.value",
+                          "must exceed factor_fade_start_advance_ratio (0.35)")
+        self.expect_error(OVERLAY + FADE.replace("value: 0.55", "value: 0.2"), 18,
+                          field + "factor_fade_end_advance_ratio.value", "must exceed")
+        self.expect_error(OVERLAY + FADE.replace("value: 0.55", "value: 4"), 18,
+                          field + "factor_fade_end_advance_ratio.value",
+                          "outside the allowed range [0, 3]")
+        self.expect_error(OVERLAY + FADE.replace("value: 0.35", "value: -0.1"), 15,
+                          field + "factor_fade_start_advance_ratio.value",
+                          "outside the allowed range [0, 3]")
+        self.expect_error(OVERLAY + FADE.replace("value: 0.35", "value: .inf"), 15,
+                          field + "factor_fade_start_advance_ratio.value",
+                          "expected a finite number")
+        only_start = "\n".join(FADE.splitlines()[:3]) + "\n"
+        self.expect_error(OVERLAY + only_start, 14, field + "factor_fade_start_advance_ratio",
+                          "needs factor_fade_end_advance_ratio too")
+        only_end = "\n".join(FADE.splitlines()[3:]) + "\n"
+        self.expect_error(OVERLAY + only_end, 14, field + "factor_fade_end_advance_ratio",
+                          "needs factor_fade_start_advance_ratio too")
+
     def test_shipped_c172_overlay_reads(self):
         path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data",
                             "aircraft", "c172.calibration.yaml")
         overlay = calibration.read_overlay(path, "c172.yaml")
         keys = sorted(s["key"] for s in overlay["settings"])
-        self.assertEqual(keys, ["power_coefficient_factor", "thrust_coefficient_factor"])
-        self.assertTrue(all("Pilot's Operating Handbook" in s["source"] for s in overlay["settings"]))
+        self.assertEqual(keys, ["factor_fade_end_advance_ratio", "factor_fade_start_advance_ratio",
+                                "power_coefficient_factor", "thrust_coefficient_factor"])
+        for s in overlay["settings"]:
+            # The factors are identified from the handbook; the band is a stated choice.
+            self.assertIn("stated choice" if s["key"].startswith("factor_fade")
+                          else "Pilot's Operating Handbook", s["source"])
 
 
 if __name__ == "__main__":

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,13 @@ struct PropellerSpec {
   // table matched to one aircraft's published performance (data/aircraft/README.md).
   double thrust_coefficient_factor = 1.0;
   double power_coefficient_factor = 1.0;
+  // Optional advance-ratio band over which those factors fade out (fedsim's, not JSBSim's): in
+  // full at J <= start, linearly to 1 at J = end. None: the factors are constant.
+  struct FactorFade {
+    double start_advance_ratio = 0.0;
+    double end_advance_ratio = 0.0;
+  };
+  std::optional<FactorFade> factor_fade;
   Table1D thrust_tip_mach_factor;   // CT multiplier against helical tip Mach (may be empty)
   Table1D power_tip_mach_factor;    // CP multiplier against helical tip Mach (may be empty)
 };

@@ -111,7 +111,8 @@ PropellerSpec read_propeller(const ConfigNode& node) {
   node.reject_unknown_keys({"diameter_m", "blade_count", "inertia_kgm2", "gear_ratio",
                             "min_pitch_deg", "max_pitch_deg", "spin_sense", "p_factor_m_per_rad",
                             "thrust_coefficient", "power_coefficient", "thrust_coefficient_factor",
-                            "power_coefficient_factor", "thrust_tip_mach_factor",
+                            "power_coefficient_factor", "factor_fade_start_advance_ratio",
+                            "factor_fade_end_advance_ratio", "thrust_tip_mach_factor",
                             "power_tip_mach_factor"});
   PropellerSpec p;
   p.diameter_m = node.number("diameter_m", 0.1, 10.0);
@@ -134,6 +135,27 @@ PropellerSpec read_propeller(const ConfigNode& node) {
   p.power_coefficient_factor =
       node.number_or("power_coefficient_factor", 1.0, Propeller::kMinCoefficientFactor,
                      Propeller::kMaxCoefficientFactor);
+  // The fade band: both ends or neither.
+  const bool has_start = node.has("factor_fade_start_advance_ratio");
+  const bool has_end = node.has("factor_fade_end_advance_ratio");
+  if (has_start != has_end) {
+    node.fail_at(has_start ? "factor_fade_start_advance_ratio" : "factor_fade_end_advance_ratio",
+                 std::string("needs factor_fade_") + (has_start ? "end" : "start") +
+                     "_advance_ratio too (a fade band has two ends)");
+  }
+  if (has_start) {
+    PropellerSpec::FactorFade fade;
+    fade.start_advance_ratio = node.number("factor_fade_start_advance_ratio", 0.0,
+                                           Propeller::kMaxFadeAdvanceRatio);
+    fade.end_advance_ratio =
+        node.number("factor_fade_end_advance_ratio", 0.0, Propeller::kMaxFadeAdvanceRatio);
+    if (!(fade.end_advance_ratio > fade.start_advance_ratio)) {
+      node.fail_at("factor_fade_end_advance_ratio",
+                   "must exceed factor_fade_start_advance_ratio (" +
+                       std::to_string(fade.start_advance_ratio) + ")");
+    }
+    p.factor_fade = fade;
+  }
   if (node.has("thrust_tip_mach_factor")) {
     p.thrust_tip_mach_factor = read_table_1d(node, "thrust_tip_mach_factor", "tip_mach");
   }

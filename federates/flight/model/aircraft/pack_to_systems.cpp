@@ -80,6 +80,10 @@ PistonPowerplant::Params piston_powerplant_params(const EngineSpec& engine) {
       coefficient_table(pr.power_coefficient, pr.power_coefficient_pitch, pr.min_pitch_rad);
   p.propeller.thrust_coefficient_factor = pr.thrust_coefficient_factor;
   p.propeller.power_coefficient_factor = pr.power_coefficient_factor;
+  if (pr.factor_fade) {
+    p.propeller.factor_fade = Propeller::FactorFade{pr.factor_fade->start_advance_ratio,
+                                                    pr.factor_fade->end_advance_ratio};
+  }
   p.propeller.thrust_tip_mach_factor = pr.thrust_tip_mach_factor;
   p.propeller.power_tip_mach_factor = pr.power_tip_mach_factor;
 

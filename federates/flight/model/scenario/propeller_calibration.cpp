@@ -1,5 +1,5 @@
-// Identification of a fixed-pitch propeller's constant CT and CP factors from the static
-// full-throttle rpm and the take-off ground roll.
+// Identification of a fixed-pitch propeller's CT and CP factors (constant, or faded out over an
+// advance-ratio band) from the static full-throttle rpm and the take-off ground roll.
 #include "flight/model/scenario/propeller_calibration.hpp"
 
 #include <cmath>
@@ -73,6 +73,17 @@ void PropellerCalibrationTargets::validate() const {
   require(factor_low < factor_high, "factor_high", "must exceed factor_low", factor_high);
   require(factor_tolerance > 0.0 && factor_tolerance < factor_high - factor_low,
           "factor_tolerance", "must be positive and below the bracket's width", factor_tolerance);
+  if (factor_fade) {
+    const double start = factor_fade->start_advance_ratio;
+    const double end = factor_fade->end_advance_ratio;
+    require(start >= 0.0 && start <= Propeller::kMaxFadeAdvanceRatio,
+            "factor_fade.start_advance_ratio", "must lie in [0, Propeller::kMaxFadeAdvanceRatio]",
+            start);
+    require(end >= 0.0 && end <= Propeller::kMaxFadeAdvanceRatio,
+            "factor_fade.end_advance_ratio", "must lie in [0, Propeller::kMaxFadeAdvanceRatio]",
+            end);
+    require(end > start, "factor_fade.end_advance_ratio", "must exceed start_advance_ratio", end);
+  }
 }
 
 AircraftModel::Options calibration_model_options() {
@@ -126,6 +137,10 @@ TakeoffRoll fly_takeoff_ground_roll(const AircraftPack& pack, const TakeoffTechn
       roll.lifted_off = true;
       roll.ground_roll_m = std::hypot(o.north_m - start_north_m, o.east_m - start_east_m);
       roll.liftoff_cas_mps = o.cas_mps;
+      if (!o.engines.empty() && o.engines[0].propeller_rpm > 0.0) {
+        roll.liftoff_advance_ratio = o.tas_mps / (o.engines[0].propeller_rpm / 60.0 *
+                                                  pack.engines[0].propeller.diameter_m);
+      }
       roll.time_s = static_cast<double>(i + 1) * dt_s;
       break;
     }
@@ -142,6 +157,13 @@ void set_propeller_factors(AircraftPack& pack, double thrust_coefficient_factor,
   }
 }
 
+void set_propeller_factor_fade(AircraftPack& pack,
+                               const std::optional<PropellerSpec::FactorFade>& fade) {
+  for (EngineSpec& engine : pack.engines) {
+    if (engine.type == EngineType::piston_propeller) engine.propeller.factor_fade = fade;
+  }
+}
+
 PropellerCalibration identify_propeller_factors(AircraftPack pack,
                                                 const PropellerCalibrationTargets& targets) {
   targets.validate();
@@ -149,6 +171,7 @@ PropellerCalibration identify_propeller_factors(AircraftPack pack,
     throw std::invalid_argument("propeller calibration: engine 0 of '" + pack.metadata.name +
                                 "' is not a piston engine with a propeller");
   }
+  set_propeller_factor_fade(pack, targets.factor_fade);
   const auto static_rpm = [&](double cp_factor) {
     set_propeller_factors(pack, 1.0, cp_factor);
     const StaticRunUp run = static_full_throttle(pack);

@@ -1,9 +1,10 @@
-// Identification of a fixed-pitch propeller's constant CT and CP factors (JSBSim's <ct_factor>,
-// <cp_factor>) from two published figures: the static full-throttle rpm and the take-off
-// ground roll, both flown through AircraftModel.
+// Identification of a fixed-pitch propeller's CT and CP factors (JSBSim's <ct_factor>,
+// <cp_factor>, constant or faded out over an advance-ratio band) from two published figures:
+// the static full-throttle rpm and the take-off ground roll, both flown through AircraftModel.
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/scenario/reposition.hpp"
@@ -38,6 +39,9 @@ struct TakeoffRoll {
   bool lifted_off = false;
   double ground_roll_m = 0.0;     ///< brake release to the last wheel leaving the ground
   double liftoff_cas_mps = 0.0;
+  /// Engine 0's propeller advance ratio at lift-off, true airspeed / (n D): the largest of the
+  /// roll (the thrust axis is within a few degrees of the path on the ground).
+  double liftoff_advance_ratio = 0.0;
   double time_s = 0.0;            ///< brake release to lift-off
 };
 
@@ -52,14 +56,23 @@ StaticRunUp static_full_throttle(const AircraftPack& pack);
 /// point of brake release.
 TakeoffRoll fly_takeoff_ground_roll(const AircraftPack& pack, const TakeoffTechnique& technique);
 
-/// Every piston engine's propeller gets these constant factors.
+/// Every piston engine's propeller gets these factors (its fade band, if any, stays).
 void set_propeller_factors(AircraftPack& pack, double thrust_coefficient_factor,
                            double power_coefficient_factor);
+
+/// Every piston engine's propeller gets this fade band (none: constant factors).
+void set_propeller_factor_fade(AircraftPack& pack,
+                               const std::optional<PropellerSpec::FactorFade>& fade);
 
 struct PropellerCalibrationTargets {
   double static_rpm = 0.0;         ///< published static full-throttle rpm (sea level)
   double ground_roll_m = 0.0;      ///< published take-off ground roll (sea level, ISA)
   TakeoffTechnique technique;      ///< how the published ground roll was flown
+  /// The advance-ratio band over which the identified factors fade out (a stated modelling
+  /// choice, not identified: data/aircraft/README.md, "Calibration"); none: constant factors.
+  /// Both figures should lie where the factors apply in full: the static rpm at J = 0 always
+  /// does, the ground roll does when the lift-off advance ratio is at most the band's start.
+  std::optional<PropellerSpec::FactorFade> factor_fade;
   /// Search bracket of both factors (within Propeller's accepted range).
   double factor_low = 0.5;
   double factor_high = 2.0;
@@ -77,12 +90,15 @@ struct PropellerCalibration {
   TakeoffRoll roll;        ///< with both factors
 };
 
-/// The procedure (data/aircraft/README.md, "Calibration"):
+/// The procedure (data/aircraft/README.md, "Calibration"), with the propeller's fade band set
+/// to `factor_fade` throughout:
 ///  1. bisection on the CP factor (CT factor 1) until the static full-throttle rpm is
-///     `static_rpm`: a fixed-pitch propeller at rest absorbs CP rho n^3 D^5, so the rpm at which
-///     it takes the engine's power falls as the CP factor rises; CT plays no part at rest;
+///     `static_rpm`: a fixed-pitch propeller at rest (J = 0, where a factor applies in full)
+///     absorbs CP rho n^3 D^5, so the rpm at which it takes the engine's power falls as the CP
+///     factor rises; CT plays no part at rest;
 ///  2. with that CP factor, bisection on the CT factor until the flown ground roll is
-///     `ground_roll_m`: the thrust at every speed scales with it, the roll falls as it rises.
+///     `ground_roll_m`: the thrust at every speed of the roll scales with it (in full below the
+///     band, less within it), the roll falls as it rises.
 /// Throws std::invalid_argument if the pack has no piston engine, or if a target is not
 /// reached anywhere in the bracket (the message gives what the bracket's ends reach), or if a
 /// ground trim fails (a take-off without lift-off counts as an endless roll).

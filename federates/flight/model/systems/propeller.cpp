@@ -35,6 +35,18 @@ void Propeller::Params::validate() const {
                          "thrust_coefficient_factor");
   param_checks::in_range(power_coefficient_factor, kMinCoefficientFactor, kMaxCoefficientFactor,
                          "power_coefficient_factor");
+  if (factor_fade) {
+    param_checks::in_range(factor_fade->start_advance_ratio, 0.0, kMaxFadeAdvanceRatio,
+                           "factor_fade_start_advance_ratio");
+    param_checks::in_range(factor_fade->end_advance_ratio, 0.0, kMaxFadeAdvanceRatio,
+                           "factor_fade_end_advance_ratio");
+    if (!(factor_fade->end_advance_ratio > factor_fade->start_advance_ratio)) {
+      param_checks::fail("factor_fade_end_advance_ratio",
+                         "must exceed factor_fade_start_advance_ratio (" +
+                             std::to_string(factor_fade->start_advance_ratio) + ")",
+                         factor_fade->end_advance_ratio);
+    }
+  }
 }
 
 Propeller::Propeller(Params params) : params_(std::move(params)) { params_.validate(); }
@@ -45,6 +57,21 @@ double Propeller::thrust_coefficient(double advance_ratio, double blade_angle_ra
 
 double Propeller::power_coefficient(double advance_ratio, double blade_angle_rad) const {
   return params_.power_coefficient(advance_ratio, blade_angle_rad);
+}
+
+double Propeller::correction_weight(double advance_ratio) const {
+  if (!params_.factor_fade) return 1.0;
+  const double start = params_.factor_fade->start_advance_ratio;
+  const double end = params_.factor_fade->end_advance_ratio;
+  return std::clamp((end - advance_ratio) / (end - start), 0.0, 1.0);
+}
+
+double Propeller::thrust_coefficient_factor_at(double advance_ratio) const {
+  return 1.0 + (params_.thrust_coefficient_factor - 1.0) * correction_weight(advance_ratio);
+}
+
+double Propeller::power_coefficient_factor_at(double advance_ratio) const {
+  return 1.0 + (params_.power_coefficient_factor - 1.0) * correction_weight(advance_ratio);
 }
 
 double Propeller::dimensional(const Table2D& table, double blade_angle_rad, double rps,
@@ -72,9 +99,12 @@ Propeller::Outputs Propeller::evaluate(const Inputs& in) const {
   out.advance_ratio = rps > 0.0 ? std::min(v / (rps * d), kLargestReportedAdvanceRatio)
                                 : (v > 0.0 ? kLargestReportedAdvanceRatio : 0.0);
   out.tip_mach = std::hypot(v, tip_speed) / std::max(in.speed_of_sound_mps, 1.0);
-  const double ct_factor = params_.thrust_coefficient_factor *
+  // The factors at the true advance ratio (infinite for a stopped propeller in a wind: past any
+  // fade band), also beyond the table's end, where the V^2 extension carries them.
+  const double true_j = rps > 0.0 ? v / (rps * d) : (v > 0.0 ? HUGE_VAL : 0.0);
+  const double ct_factor = thrust_coefficient_factor_at(true_j) *
                            factor_or_one(params_.thrust_tip_mach_factor, out.tip_mach);
-  const double cp_factor = params_.power_coefficient_factor *
+  const double cp_factor = power_coefficient_factor_at(true_j) *
                            factor_or_one(params_.power_tip_mach_factor, out.tip_mach);
 
   out.thrust_coefficient = thrust_coefficient(out.advance_ratio, in.blade_angle_rad) * ct_factor;

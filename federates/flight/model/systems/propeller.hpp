@@ -2,6 +2,8 @@
 // and blade angle.
 #pragma once
 
+#include <optional>
+
 #include "common/math/interpolation.hpp"
 
 namespace fedsim::flight {
@@ -18,9 +20,13 @@ namespace fedsim::flight {
 ///
 /// Model (n in rev/s, D diameter):
 ///   T = CT(J, beta) rho n^2 D^4,   Q = CP(J, beta) rho n^2 D^5 / (2 pi),
-/// with CT and CP scaled by the constant factors (JSBSim's <ct_factor>, <cp_factor>: they match
-/// a generic table to one aircraft's published performance) and by the optional
-/// helical-tip-Mach factors. The tables stop at a
+/// with CT and CP scaled by the factors (JSBSim's <ct_factor>, <cp_factor>: they match a generic
+/// table to one aircraft's published performance) and by the optional helical-tip-Mach factors.
+/// Without a fade band the factors f are constant (JSBSim's); with one [J_a, J_b] (fedsim's:
+/// a correction of the table at low advance ratio that leaves the rest of it as it is) they
+/// apply in full up to J_a and fade linearly to none above:
+///   f(J) = f for J <= J_a,   f + (1 - f) (J - J_a) / (J_b - J_a) for J_a < J < J_b,   1 beyond.
+/// The tables stop at a
 /// largest advance ratio J_end; beyond it (which includes a stopped propeller, J -> infinity)
 /// the blades see mostly the free stream, forces scale with V^2, i.e. CT and CP grow as J^2:
 ///   T = CT(J_end) / J_end^2 rho V^2 D^2,   Q = CP(J_end) / J_end^2 rho V^2 D^3 / (2 pi),
@@ -33,6 +39,17 @@ class Propeller {
   /// enough to refuse a typo or a unit slip.
   static constexpr double kMinCoefficientFactor = 0.1;
   static constexpr double kMaxCoefficientFactor = 10.0;
+  /// The largest advance ratio a fade band may end at: beyond the working range of any
+  /// propeller table (fixed-pitch propellers windmill near J 1-1.5, constant-speed propellers of
+  /// fast aircraft work up to about J 3), so a larger figure is a typo or a unit slip.
+  static constexpr double kMaxFadeAdvanceRatio = 3.0;
+
+  /// Advance-ratio band over which the CT and CP factors fade out: in full at J <= start,
+  /// linearly to none (factor 1) at J = end, none beyond. 0 <= start < end <= kMaxFadeAdvanceRatio.
+  struct FactorFade {
+    double start_advance_ratio = 0.0;
+    double end_advance_ratio = 0.0;
+  };
 
   struct Params {
     double diameter_m = 0.0;
@@ -46,6 +63,8 @@ class Propeller {
     /// [kMinCoefficientFactor, kMaxCoefficientFactor].
     double thrust_coefficient_factor = 1.0;
     double power_coefficient_factor = 1.0;
+    /// Where the two factors fade out; none (the default): they apply at every advance ratio.
+    std::optional<FactorFade> factor_fade;
     /// Optional factors on CT and CP as functions of helical tip Mach number; empty = 1.
     Table1D thrust_tip_mach_factor;
     Table1D power_tip_mach_factor;
@@ -79,6 +98,10 @@ class Propeller {
   /// CT(J, beta) straight from the table (no factor, J clamped to the table).
   double thrust_coefficient(double advance_ratio, double blade_angle_rad) const;
   double power_coefficient(double advance_ratio, double blade_angle_rad) const;
+  /// The CT and CP factors at advance ratio J (the constant factors, faded by factor_fade; no
+  /// tip-Mach factor).
+  double thrust_coefficient_factor_at(double advance_ratio) const;
+  double power_coefficient_factor_at(double advance_ratio) const;
   const Params& params() const { return params_; }
 
  private:
@@ -86,6 +109,8 @@ class Propeller {
   // beyond the table's last advance ratio.
   double dimensional(const Table2D& table, double blade_angle_rad, double rps, double airspeed_mps,
                      double density_kgpm3, int diameter_power) const;
+  // The share of a factor's correction (f - 1) that applies at J: 1 without a fade band.
+  double correction_weight(double advance_ratio) const;
 
   Params params_;
 };

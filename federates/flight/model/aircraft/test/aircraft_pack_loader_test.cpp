@@ -136,9 +136,12 @@ TEST(AircraftPackLoader, C172FiguresAreTheJsbsimOnesInSi) {
   EXPECT_EQ(engine.propeller.spin_sense, -1);
   EXPECT_NEAR(engine.propeller.thrust_coefficient(0.0), 0.073, 1e-12);
   EXPECT_NEAR(engine.propeller.power_coefficient(1.0), 0.0282, 1e-12);
-  // prop_75in2f.xml states no <ct_factor>, <cp_factor>: JSBSim's default 1.
-  EXPECT_EQ(engine.propeller.thrust_coefficient_factor, 1.0);
-  EXPECT_EQ(engine.propeller.power_coefficient_factor, 1.0);
+  // prop_75in2f.xml states no <ct_factor>, <cp_factor> (JSBSim's default 1): the pack's factors
+  // and their fade band are the calibration overlay's, merged by the converter
+  // (PropellerCalibration.C172PackCarriesTheOverlay checks the values).
+  EXPECT_NE(engine.propeller.thrust_coefficient_factor, 1.0);
+  EXPECT_NE(engine.propeller.power_coefficient_factor, 1.0);
+  EXPECT_TRUE(engine.propeller.factor_fade.has_value());
 
   ASSERT_EQ(p.landing_gear.contacts.size(), 6u);
   const GearContactSpec& nose = p.landing_gear.contacts[0];

@@ -1,6 +1,7 @@
 // Tests of the propeller-factor identification (propeller_calibration.hpp): the premises of the
 // procedure, that it reaches its targets, that the C172's recorded factors are what it
-// identifies, and that it refuses what it cannot do.
+// identifies with the recorded fade band, that the pack carries them, and that it refuses what
+// it cannot do.
 #include "flight/model/scenario/propeller_calibration.hpp"
 
 #include <gtest/gtest.h>
@@ -18,15 +19,33 @@ namespace {
 
 using namespace testing;
 
+/// The C172's calibration overlay (data/aircraft/c172.calibration.yaml), propeller section.
+util::ConfigNode c172_overlay_propeller() {
+  return util::ConfigNode::load_file(std::string(FEDSIM_DATA_DIR) +
+                                     "/aircraft/c172.calibration.yaml")
+      .child("engines")
+      .child("engine")
+      .child("propeller");
+}
+
+/// The fade band recorded in the overlay (a stated choice: data/aircraft/README.md).
+PropellerSpec::FactorFade c172_overlay_fade() {
+  const util::ConfigNode prop = c172_overlay_propeller();
+  return {prop.child("factor_fade_start_advance_ratio").number("value"),
+          prop.child("factor_fade_end_advance_ratio").number("value")};
+}
+
 /// The C172 targets from the Cessna Model 172P Pilot's Operating Handbook (1981): static
 /// full-throttle rpm 2300-2420 at sea level (the band's middle), short-field ground roll 890 ft
-/// at 2400 lb, sea level, ISA, flaps 10 deg, lift-off 51 KIAS (rotation at 50 KCAS).
+/// at 2400 lb, sea level, ISA, flaps 10 deg, lift-off 51 KIAS (rotation at 50 KCAS); the
+/// overlay's fade band.
 PropellerCalibrationTargets c172_poh_targets(const AircraftPack& pack) {
   PropellerCalibrationTargets t;
   t.static_rpm = 2360.0;
   t.ground_roll_m = 890.0 * kFt;
   t.technique.flaps_norm = 10.0 * kDeg / pack.flight_controls.flaps->full_travel_rad;
   t.technique.rotate_cas_mps = 50.0 * kKt;
+  t.factor_fade = c172_overlay_fade();
   return t;
 }
 
@@ -61,10 +80,12 @@ TEST(PropellerCalibration, C172ReachesThePohTargetsAndTheOverlayRecordsTheResult
   const AircraftPack pack = load_pack("c172.yaml");
   const PropellerCalibrationTargets targets = c172_poh_targets(pack);
   const PropellerCalibration cal = identify_propeller_factors(pack, targets);
-  std::printf("C172 identified: CP x %.4f, CT x %.4f; static %.1f rpm, roll %.1f ft, lift-off "
-              "%.1f KCAS\n",
+  std::printf("C172 identified with the fade band %.2f-%.2f: CP x %.4f, CT x %.4f; static %.1f "
+              "rpm, %.1f hp, roll %.1f ft, lift-off %.1f KCAS at J %.3f\n",
+              targets.factor_fade->start_advance_ratio, targets.factor_fade->end_advance_ratio,
               cal.power_coefficient_factor, cal.thrust_coefficient_factor, cal.static_run.rpm,
-              cal.roll.ground_roll_m / kFt, cal.roll.liftoff_cas_mps / kKt);
+              cal.static_run.power_w / 745.69987158227022, cal.roll.ground_roll_m / kFt,
+              cal.roll.liftoff_cas_mps / kKt, cal.roll.liftoff_advance_ratio);
   ASSERT_TRUE(cal.static_run.converged);
   ASSERT_TRUE(cal.roll.lifted_off);
   EXPECT_NEAR(cal.static_run.rpm, 2360.0, 0.5);
@@ -73,19 +94,32 @@ TEST(PropellerCalibration, C172ReachesThePohTargetsAndTheOverlayRecordsTheResult
   // A higher static rpm than the source table's ~2200 needs a propeller that absorbs less power
   // at rest.
   EXPECT_LT(cal.power_coefficient_factor, 1.0);
+  // The band starts where the take-off roll ends: the whole roll, like the run-up, is flown
+  // with the factors in full, so both identify the correction where it applies in full.
+  EXPECT_LE(cal.roll.liftoff_advance_ratio, targets.factor_fade->start_advance_ratio);
+  EXPECT_GT(cal.roll.liftoff_advance_ratio, targets.factor_fade->start_advance_ratio - 0.05);
 
   // data/aircraft/c172.calibration.yaml records this result (to four decimals). If this fails,
   // the C172's aerodynamics, gear, mass or engine have changed: re-run the procedure in the
-  // overlay and update its values.
-  const util::ConfigNode prop = util::ConfigNode::load_file(std::string(FEDSIM_DATA_DIR) +
-                                                            "/aircraft/c172.calibration.yaml")
-                                    .child("engines")
-                                    .child("engine")
-                                    .child("propeller");
+  // overlay, update its values and regenerate c172.yaml (data/aircraft/README.md).
+  const util::ConfigNode prop = c172_overlay_propeller();
   EXPECT_NEAR(prop.child("power_coefficient_factor").number("value"),
               cal.power_coefficient_factor, 0.005);
   EXPECT_NEAR(prop.child("thrust_coefficient_factor").number("value"),
               cal.thrust_coefficient_factor, 0.005);
+}
+
+TEST(PropellerCalibration, C172PackCarriesTheOverlay) {
+  // c172.yaml is the converter's output with the overlay merged (data/aircraft/README.md):
+  // the propeller's two factors and fade band are the overlay's, to the digit.
+  const util::ConfigNode prop = c172_overlay_propeller();
+  const PropellerSpec& pack = load_pack("c172.yaml").engines.front().propeller;
+  EXPECT_EQ(pack.power_coefficient_factor, prop.child("power_coefficient_factor").number("value"));
+  EXPECT_EQ(pack.thrust_coefficient_factor,
+            prop.child("thrust_coefficient_factor").number("value"));
+  ASSERT_TRUE(pack.factor_fade);
+  EXPECT_EQ(pack.factor_fade->start_advance_ratio, c172_overlay_fade().start_advance_ratio);
+  EXPECT_EQ(pack.factor_fade->end_advance_ratio, c172_overlay_fade().end_advance_ratio);
 }
 
 TEST(PropellerCalibration, UnreachableTargetsAndBadInputsAreRefusedByName) {
@@ -108,6 +142,15 @@ TEST(PropellerCalibration, UnreachableTargetsAndBadInputsAreRefusedByName) {
   t = c172_poh_targets(c172);
   t.factor_low = 0.01;  // below what Propeller accepts
   EXPECT_NE(error_of([&] { identify_propeller_factors(c172, t); }).find("factor_low"),
+            std::string::npos);
+  t = c172_poh_targets(c172);
+  t.factor_fade = PropellerSpec::FactorFade{0.5, 0.5};  // an empty band
+  EXPECT_NE(error_of([&] { identify_propeller_factors(c172, t); })
+                .find("factor_fade.end_advance_ratio"),
+            std::string::npos);
+  t.factor_fade = PropellerSpec::FactorFade{std::nan(""), 0.5};
+  EXPECT_NE(error_of([&] { identify_propeller_factors(c172, t); })
+                .find("factor_fade.start_advance_ratio"),
             std::string::npos);
   t = c172_poh_targets(c172);
   t.static_rpm = std::nan("");

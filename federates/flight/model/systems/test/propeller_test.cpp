@@ -211,6 +211,68 @@ TEST(Propeller, ConstantFactorsOutsideTheirRangeAreRefusedByName) {
   }
 }
 
+TEST(Propeller, FadedFactorsApplyInFullBelowTheBandAndNotAtAllAboveIt) {
+  // Factors 1.2 (CT) and 0.8 (CP) faded out between J 0.3 and 0.5: in full at J 0.2 and 0.3,
+  // half at J 0.4 (1.1 and 0.9), none at 0.5 and beyond. prop_75in2f: CT 0.072, 0.069, 0.066,
+  // 0.062 and CP 0.070, 0.060, 0.053, 0.0501 at J 0.2, 0.4, 0.5, 0.6.
+  Propeller::Params params = reference::prop_75in2f();
+  params.thrust_coefficient_factor = 1.2;
+  params.power_coefficient_factor = 0.8;
+  params.factor_fade = Propeller::FactorFade{0.3, 0.5};
+  const Propeller prop(params);
+  const double d = params.diameter_m;
+  Propeller::Inputs in;
+  in.blade_angle_rad = 22.0 * reference::kDeg;
+  in.rpm = 2000.0;
+  const double n = in.rpm / 60.0;
+  struct Case {
+    double j, ct, cp;
+  };
+  for (const Case& c : {Case{0.2, 1.2 * 0.072, 0.8 * 0.070}, Case{0.4, 1.1 * 0.069, 0.9 * 0.060},
+                        Case{0.5, 0.066, 0.053}, Case{0.6, 0.062, 0.0501}}) {
+    in.axial_airspeed_mps = c.j * n * d;
+    const Propeller::Outputs out = prop.evaluate(in);
+    ASSERT_LT(out.tip_mach, 0.85);
+    EXPECT_NEAR(out.thrust_coefficient, c.ct, 1e-12) << "J " << c.j;
+    EXPECT_NEAR(out.power_coefficient, c.cp, 1e-12) << "J " << c.j;
+    EXPECT_NEAR(out.thrust_n, c.ct * 1.225 * n * n * std::pow(d, 4), 1e-6) << "J " << c.j;
+    EXPECT_NEAR(out.power_w, c.cp * 1.225 * n * n * n * std::pow(d, 5), 1e-5) << "J " << c.j;
+  }
+  // At rest the factors apply in full; a stopped propeller in a wind (J infinite) has none.
+  in.axial_airspeed_mps = 0.0;
+  EXPECT_NEAR(prop.evaluate(in).thrust_n, 1.2 * 0.073 * 1.225 * n * n * std::pow(d, 4), 1e-6);
+  in.rpm = 0.0;
+  in.axial_airspeed_mps = 30.0;
+  EXPECT_NEAR(prop.evaluate(in).thrust_n, -0.073 / 25.0 * 1.225 * 30.0 * 30.0 * d * d, 1e-6);
+  // Without a band the same factors are constant (JSBSim's): at J 0.6 they apply in full.
+  params.factor_fade.reset();
+  in.rpm = 2000.0;
+  in.axial_airspeed_mps = 0.6 * n * d;
+  EXPECT_NEAR(Propeller(params).evaluate(in).power_coefficient, 0.8 * 0.0501, 1e-12);
+}
+
+TEST(Propeller, FadeBandsOutsideTheirRangeAreRefusedByName) {
+  struct Bad {
+    double start, end;
+    const char* field;
+  };
+  for (const Bad& b : {Bad{-0.1, 0.5, "factor_fade_start_advance_ratio"},
+                       Bad{std::nan(""), 0.5, "factor_fade_start_advance_ratio"},
+                       Bad{0.3, HUGE_VAL, "factor_fade_end_advance_ratio"},
+                       Bad{0.3, 3.5, "factor_fade_end_advance_ratio"},
+                       Bad{0.5, 0.5, "factor_fade_end_advance_ratio"},
+                       Bad{0.5, 0.3, "factor_fade_end_advance_ratio"}}) {
+    Propeller::Params p = reference::prop_75in2f();
+    p.factor_fade = Propeller::FactorFade{b.start, b.end};
+    try {
+      p.validate();
+      ADD_FAILURE() << "band " << b.start << ".." << b.end << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(b.field), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Propeller, NegativeOrNanInputsGiveNoNan) {
   const Propeller prop(reference::prop_75in2f());
   Propeller::Inputs in;
