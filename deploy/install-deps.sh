@@ -11,7 +11,7 @@ PACKAGES=(
   # maths, geodesy, config, logging, CLI
   libeigen3-dev libgeographiclib-dev libyaml-cpp-dev nlohmann-json3-dev libspdlog-dev libcli11-dev
   # rendering, plots, images
-  libosmesa6-dev libpng-dev gnuplot-nox
+  libosmesa6-dev libpng-dev gnuplot-nox graphviz
   # tests
   libgtest-dev libgmock-dev
   # process tools used by tests (pgrep/pkill) and network namespaces
