@@ -42,7 +42,7 @@ struct Options {
   std::string seedproto;
   std::string qos_file = FEDSIM_QOS_FILE;
   std::string profile = "fedsim_loopback";
-  std::string sync_qos = "reliable";
+  std::string sync_qos = "best_effort";
   bool skip_realtime = false;
 };
 
@@ -184,8 +184,8 @@ int main(int argc, char** argv) {
   app.add_option("--domain", o.first_domain, "first of three DDS domains used")
       ->check(CLI::Range(0, 230))->capture_default_str();
   app.add_option("--participant-profile", o.profile, "participant QoS profile")->capture_default_str();
-  app.add_option("--sync-qos", o.sync_qos, "tick/acknowledgement QoS: reliable | best_effort")
-      ->check(CLI::IsMember({"reliable", "best_effort"}))->capture_default_str();
+  app.add_option("--sync-qos", o.sync_qos, "tick/acknowledgement QoS: best_effort | reliable")
+      ->check(CLI::IsMember({"best_effort", "reliable"}))->capture_default_str();
   app.add_option("--seedproto", o.seedproto, "also run the seed protocol baseline (path to seedproto)");
   app.add_flag("--lockstep-only", o.skip_realtime, "skip the realtime phases");
   CLI11_PARSE(app, argc, argv);

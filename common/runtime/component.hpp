@@ -188,6 +188,12 @@ class Component {
   const std::vector<FaultReport>& faults() const { return faults_; }
   std::uint64_t fault_count() const;
 
+  /// Host side: counts a fault the host found on one of the component's ports (a silent
+  /// writer), reported with the component's own faults.
+  void report_port_fault(const std::string& kind, const std::string& message) {
+    report_fault(kind, message);
+  }
+
   /// Where the component logs (the host's logger once bound; a default one until then).
   spdlog::logger& log() const { return *log_; }
   void set_logger(std::shared_ptr<spdlog::logger> logger) { log_ = std::move(logger); }

@@ -2,6 +2,7 @@
 
 #include "common/runtime/log.hpp"
 #include "common/runtime/shutdown.hpp"
+#include "common/frame_clock/silence_watch.hpp"
 #include "common/util/monotonic_clock.hpp"
 
 #include <unistd.h>
@@ -86,21 +87,49 @@ class Federate::PortBindings final : public PortBinder {
     Subscription<T>& sub = federate_.subscribe(topic, port.info().qos, lockstep);
     if constexpr (Stamped<T>) {
       refreshers_.push_back([&sub, &port, last = std::int64_t{-1}](std::uint64_t frame) mutable {
-        if (!sub.latest_before(frame, port.slot())) return;
+        if (!sub.latest_before(frame, port.slot())) return false;
         const auto stamp = static_cast<std::int64_t>(port.slot().stamp().frame());
-        if (stamp != last) {
-          last = stamp;
-          port.mark_updated();
-        }
+        if (stamp == last) return false;
+        last = stamp;
+        port.mark_updated();
+        return true;
       });
     } else {
       refreshers_.push_back([&sub, &port, seen = std::uint64_t{0}](std::uint64_t) mutable {
         const std::uint64_t received = sub.received_count();
-        if (received == seen || !sub.latest(port.slot())) return;
+        if (received == seen || !sub.latest(port.slot())) return false;
         seen = received;
         port.mark_updated();
+        return true;
       });
     }
+    if (port.info().topic->every_frame) watch_for_silence(sub, refreshers_.back());
+  }
+
+  /// Wraps a port's refresh with a frame-counted silence watch (no DDS deadline: see
+  /// common/frame_clock/silence_watch.hpp): a matched writer that wrote nothing for
+  /// --silent-frames frames is a fault of kind silent_writer, named by topic.
+  template <class T>
+  void watch_for_silence(Subscription<T>& sub, std::function<bool(std::uint64_t)>& refresh) {
+    const std::uint64_t limit = federate_.options().silent_frames;
+    if (limit == 0) return;
+    refresh = [&sub, inner = std::move(refresh), watch = timing::SilenceWatch(limit),
+               component = federate_.component_, log = federate_.log_](std::uint64_t frame) mutable {
+      const bool updated = inner(frame);
+      switch (watch.observe(frame, sub.matched_writers() > 0, updated)) {
+        case timing::SilenceWatch::Event::kSilent:
+          component->report_port_fault(
+              "silent_writer", sub.topic_name() + ": a matched writer wrote nothing for " +
+                                   std::to_string(watch.quiet_frames()) + " frames");
+          break;
+        case timing::SilenceWatch::Event::kResumed:
+          log->warn("frame={} topic={}: its writer writes again", frame, sub.topic_name());
+          break;
+        case timing::SilenceWatch::Event::kNone:
+          break;
+      }
+      return updated;
+    };
   }
 
   template <class T>
@@ -110,7 +139,7 @@ class Federate::PortBindings final : public PortBinder {
   }
 
   Federate& federate_;
-  std::vector<std::function<void(std::uint64_t)>> refreshers_;
+  std::vector<std::function<bool(std::uint64_t)>> refreshers_;  // true: a new sample
 };
 
 // ---- Federate ---------------------------------------------------------------------------------
@@ -197,13 +226,19 @@ void Federate::handle_tick(const msg::FrameTick& tick) {
     return;
   }
   if (pending_ && pending_tick_.frame() == tick.frame()) return;  // a repeat of the pending tick
-  if (pending_) ++stats_.skipped_ticks;
+  // A newer tick replacing a pending one (realtime) keeps the time the wait for inputs began:
+  // otherwise a federate whose input stays missing would restart its wait on every tick and
+  // never step.
+  if (pending_) {
+    ++stats_.skipped_ticks;
+  } else {
+    pending_since_ns_ = util::monotonic_ns();
+  }
   pending_tick_ = tick;
   pending_ = true;
-  pending_since_ns_ = util::monotonic_ns();
   const bool ready = inputs_ready_locked(tick.frame());
   lock.unlock();
-  if (ready) frame_cv_.notify_one();
+  if (ready) frame_bell_.ring();
 }
 
 void Federate::on_lockstep_input() {
@@ -212,7 +247,7 @@ void Federate::on_lockstep_input() {
     std::lock_guard lock(frame_mutex_);
     wake = pending_ && !stopping_ && inputs_ready_locked(pending_tick_.frame());
   }
-  if (wake) frame_cv_.notify_one();
+  if (wake) frame_bell_.ring();
 }
 
 bool Federate::inputs_ready_locked(std::uint64_t frame) const {
@@ -314,7 +349,7 @@ void Federate::stop(const std::string& reason) {
     std::lock_guard lock(command_mutex_);  // not frame_mutex_: stop() may be called from a step
     stop_reason_ = reason;
   }
-  frame_cv_.notify_all();
+  frame_bell_.ring();
 }
 
 void Federate::fail(const std::string& reason) {
@@ -385,17 +420,19 @@ void Federate::frame_loop() {
     msg::FrameTick tick;
     bool take = false;
     bool late = false;
+    const std::uint32_t rang = frame_bell_.value();  // before looking: no wake-up is lost
+    std::chrono::nanoseconds wait = kLoopWakeup;
     {
-      std::unique_lock lock(frame_mutex_);
-      auto frame_ready = [&] {
-        return stop_requested_.load() ||
-               (pending_ && !stopping_ && inputs_ready_locked(pending_tick_.frame()));
-      };
-      frame_cv_.wait_for(lock, kLoopWakeup, frame_ready);
+      std::lock_guard lock(frame_mutex_);
       if (pending_ && !stopping_ && !stop_requested_.load()) {
         const bool ready = inputs_ready_locked(pending_tick_.frame());
         const double waited_s = (util::monotonic_ns() - pending_since_ns_) * 1e-9;
-        if (ready || waited_s >= input_timeout_s(pending_tick_)) {
+        const double timeout_s = input_timeout_s(pending_tick_);
+        // Waiting for an input: wake when its timeout runs out, not a loop period later.
+        wait = std::min<std::chrono::nanoseconds>(
+            wait, std::chrono::nanoseconds(static_cast<std::int64_t>(
+                      std::max(0.0, timeout_s - waited_s) * 1e9) + 1));
+        if (ready || waited_s >= timeout_s) {
           if (!ready) log_late_inputs_locked(pending_tick_.frame());
           tick = pending_tick_;
           pending_ = false;
@@ -406,7 +443,11 @@ void Federate::frame_loop() {
         }
       }
     }
-    if (take) run_frame(tick, late);
+    if (take) {
+      run_frame(tick, late);
+    } else if (!stop_requested_.load()) {
+      frame_bell_.wait(rang, wait);
+    }
     if (!announced_running && stepped_any_) {
       announced_running = true;
       publish_status(msg::FEDERATE_RUNNING, "");

@@ -22,12 +22,12 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
+#include "common/util/doorbell.hpp"
 #include "common/util/latency_stats.hpp"
 
 #include <spdlog/logger.h>
 
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -142,7 +142,7 @@ class Federate {
   // Frame state shared with the listener threads, guarded by frame_mutex_. The step itself
   // runs without it.
   mutable std::mutex frame_mutex_;
-  std::condition_variable frame_cv_;
+  util::Doorbell frame_bell_;  // rung by the listeners: a tick, an input, a stop
   std::vector<std::shared_ptr<LockstepInput>> inputs_;
   bool accepting_ticks_ = false;
   bool stopping_ = false;

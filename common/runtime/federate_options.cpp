@@ -1,6 +1,9 @@
 #include "common/runtime/federate_options.hpp"
 
+#include "common/runtime/topic_catalogue.hpp"
+
 #include <cstdlib>
+#include <map>
 
 namespace fedsim::runtime {
 
@@ -28,6 +31,15 @@ void add_dds_options(CLI::App& app, ParticipantOptions& options) {
       ->capture_default_str();
 }
 
+void add_sync_qos_option(CLI::App& app, std::string& suffix, const std::string& description) {
+  // A value outside the two is an error (CheckedTransformer), never silently the default.
+  const std::map<std::string, std::string> suffixes{
+      {"best_effort", ""}, {"reliable", std::string(qos::kReliableSuffix)}};
+  app.add_option("--sync-qos", suffix, description)
+      ->transform(CLI::CheckedTransformer(suffixes))
+      ->default_str("best_effort");
+}
+
 void add_federate_options(CLI::App& app, FederateOptions& options,
                           const std::string& default_name) {
   options.name = default_name;
@@ -41,14 +53,18 @@ void add_federate_options(CLI::App& app, FederateOptions& options,
   app.add_option("--duration", options.duration_s, "stop after this many seconds (0 = no limit)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--frames", options.max_frames, "stop after stepping this many frames (0 = no limit)");
-  app.add_option("--sync-qos", options.sync_qos_suffix,
-                 "QoS of the frame tick and acknowledgement: reliable (default) or best_effort "
-                 "(faster; the timing federate repeats a tick whose acknowledgements are overdue)")
-      ->transform([](const std::string& v) { return v == "best_effort" ? "_best_effort" : ""; })
-      ->check(CLI::IsMember({"reliable", "best_effort", "", "_best_effort"}));
+  add_sync_qos_option(app, options.sync_qos_suffix,
+                      "QoS of the frame tick and acknowledgement: best_effort (the timing federate "
+                      "repeats a tick whose acknowledgements are overdue) or reliable (the "
+                      "middleware repairs losses; slower)");
   app.add_option("--input-timeout", options.input_timeout_s,
                  "lockstep: seconds to wait for a missing input before stepping without it")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--silent-frames", options.silent_frames,
+                 "report a matched writer of a per-frame topic (state, controls) that wrote "
+                 "nothing for this many frames, as fault silent_writer (0 = never)")
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}))
       ->capture_default_str();
 }
 

@@ -18,6 +18,14 @@ Topic<T> topic(const std::string& name, std::string_view qos, bool lockstep_inpu
   return Topic<T>{TopicInfo{name, support.getName(), std::string(qos), lockstep_input,
                             std::move(description)}};
 }
+/// A topic whose writers write every frame (simulation state and inputs).
+template <class T>
+Topic<T> frame_topic(const std::string& name, std::string_view qos, bool lockstep_input,
+                     std::string description) {
+  Topic<T> t = topic<T>(name, qos, lockstep_input, std::move(description));
+  t.info.every_frame = true;
+  return t;
+}
 }  // namespace
 
 namespace topics {
@@ -36,18 +44,18 @@ const Topic<msg::FederateStatus> federate_status =
                                "each federate's state, frame statistics and faults");
 // Simulation data.
 const Topic<msg::PilotControls> pilot_controls =
-    topic<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS, qos::kLockstepData, true,
+    frame_topic<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS, qos::kLockstepData, true,
                               "inceptor, lever and switch positions");
 const Topic<msg::AircraftState> aircraft_state =
-    topic<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, qos::kState, true,
+    frame_topic<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, qos::kState, true,
                               "position, velocity, attitude, rates, air data of each aircraft");
-const Topic<msg::EngineState> engine_state = topic<msg::EngineState>(
+const Topic<msg::EngineState> engine_state = frame_topic<msg::EngineState>(
     msg::TOPIC_ENGINE_STATE, qos::kState, true, "each engine's thrust, speeds, temperatures");
-const Topic<msg::NavigationState> navigation_state = topic<msg::NavigationState>(
+const Topic<msg::NavigationState> navigation_state = frame_topic<msg::NavigationState>(
     msg::TOPIC_NAVIGATION_STATE, qos::kState, true, "radio aids, INS, GPS, flight director");
-const Topic<msg::MotionPlatformState> motion_state = topic<msg::MotionPlatformState>(
+const Topic<msg::MotionPlatformState> motion_state = frame_topic<msg::MotionPlatformState>(
     msg::TOPIC_MOTION_STATE, qos::kState, true, "motion platform pose and actuator lengths");
-const Topic<msg::ControlLoadingState> control_loading_state = topic<msg::ControlLoadingState>(
+const Topic<msg::ControlLoadingState> control_loading_state = frame_topic<msg::ControlLoadingState>(
     msg::TOPIC_CONTROL_LOADING_STATE, qos::kState, true, "control loader positions and forces");
 const Topic<msg::VisualChannelStatus> visual_status = topic<msg::VisualChannelStatus>(
     msg::TOPIC_VISUAL_STATUS, qos::kStatus, false, "each image generator's render time and age");

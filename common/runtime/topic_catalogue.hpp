@@ -17,14 +17,14 @@ namespace fedsim::runtime {
 
 /// QoS profile names of qos/fedsim_qos.xml (the reasoning is in qos/README.md).
 namespace qos {
-inline constexpr std::string_view kTick = "tick";                  // reliable frame tick
-inline constexpr std::string_view kFrameDone = "frame_done";       // reliable, keyed by federate
+inline constexpr std::string_view kTick = "tick";                  // best-effort frame tick
+inline constexpr std::string_view kFrameDone = "frame_done";       // best effort, keyed by federate
 inline constexpr std::string_view kState = "state";                // best effort, keep last 1
 inline constexpr std::string_view kLockstepData = "lockstep_data"; // reliable, transient local
 inline constexpr std::string_view kCommand = "command";            // reliable, transient local
 inline constexpr std::string_view kStatus = "status";              // reliable, liveliness
-/// Suffix of the best-effort variants of tick and frame_done (--sync-qos best_effort).
-inline constexpr std::string_view kBestEffortSuffix = "_best_effort";
+/// Suffix of the reliable variants of tick and frame_done (--sync-qos reliable).
+inline constexpr std::string_view kReliableSuffix = "_reliable";
 /// Every data profile above (participant profiles are listed in qos/README.md).
 const std::vector<std::string_view>& all();
 }  // namespace qos
@@ -36,6 +36,8 @@ struct TopicInfo {
   std::string default_qos;   // profile name in qos/fedsim_qos.xml
   bool lockstep_input = false;  // readers wait for the previous frame's sample in lockstep
   std::string description;
+  bool every_frame = false;     // its writers write once per frame: a reader reports a matched
+                                // writer silent for --silent-frames frames (a silent writer)
 };
 
 /// A topic with its message type T.

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <csignal>
 
 #include <algorithm>
 #include <cmath>
@@ -150,10 +151,11 @@ TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
   EXPECT_GT(frozen_frames, 10);
 }
 
-TEST(Federation, BestEffortSyncQosStillDeliversEveryFrameOnceInOrder) {
-  const int domain = 137;
-  const std::string dir = temp_dir("besteffort");
-  const std::vector<std::string> qos{"--sync-qos", "best_effort"};
+// Both tick/acknowledgement QoS choices: best effort (the default, losses recovered by the
+// timing federate's repeat) and reliable (the middleware's repair).
+void expect_every_frame_once_in_order(const std::string& sync_qos, int domain) {
+  const std::string dir = temp_dir("sync-" + sync_qos);
+  const std::vector<std::string> qos{"--sync-qos", sync_qos};
   auto a = start(dir, "a", domain, "fedsim-synthetic", concat({"--trace", dir + "/a.csv"}, qos));
   auto b = start(dir, "b", domain, "fedsim-synthetic", concat({"--trace", dir + "/b.csv"}, qos));
   auto timing = start(dir, "timing", domain, "fedsim-timing",
@@ -168,6 +170,14 @@ TEST(Federation, BestEffortSyncQosStillDeliversEveryFrameOnceInOrder) {
     ASSERT_EQ(trace.size(), 3000u);
     for (std::size_t i = 0; i < trace.size(); ++i) ASSERT_EQ(trace[i].frame, i);
   }
+}
+
+TEST(Federation, BestEffortSyncQosDeliversEveryFrameOnceInOrder) {
+  expect_every_frame_once_in_order("best_effort", 137);
+}
+
+TEST(Federation, ReliableSyncQosDeliversEveryFrameOnceInOrder) {
+  expect_every_frame_once_in_order("reliable", 141);
 }
 
 TEST(Federation, KilledFederateIsReportedAndLockstepGoesOn) {
@@ -213,6 +223,57 @@ TEST(Federation, ScriptedIoPublishesTheProfileEveryFrame) {
   }
   EXPECT_NEAR(rows[101].elevator, 0.2, 1e-6);   // frame 100 = 2.0 s: the step
   EXPECT_NEAR(rows[126].elevator, 0.0, 1e-6);   // 2.5 s: half way down the ramp
+}
+
+// A reader of a per-frame topic reports a matched writer that went quiet (here: the I/O
+// federate stopped with SIGSTOP for a second in a realtime run) as fault silent_writer, by
+// topic, and exits 1; the same run without the pause has no such fault (negative control).
+std::unique_ptr<ChildProcess> run_with_paused_writer(bool pause, int domain) {
+  const std::string dir = temp_dir(pause ? "silent" : "not-silent");
+  std::ofstream(dir + "/profile.csv") << "time_s,elevator\n0,0\n10,0.1\n";
+  auto io = start(dir, "io", domain, "fedsim-io", {"--profile", dir + "/profile.csv"});
+  auto consumer = start(dir, "c", domain, "fedsim-synthetic", {"--input", "--trace", dir + "/c.csv"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "realtime", "--rate", "50", "--expect", "io,c", "--duration",
+                       "4", "--shutdown-on-exit"});
+  for (int i = 0; i < 300 && read_file(dir + "/c.csv").size() < 2000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (pause) {
+    kill(io->pid(), SIGSTOP);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+    kill(io->pid(), SIGCONT);
+  }
+  if (!timing->wait(30) || !consumer->wait(10) || !io->wait(10)) {
+    ADD_FAILURE() << "the federation did not stop:\n" << timing->output();
+    return nullptr;
+  }
+  // The reader kept stepping through the pause, with its last sample (no starvation).
+  const auto trace = read_trace(dir + "/c.csv");
+  EXPECT_GT(trace.size(), 100u);
+  for (std::size_t i = 1; i < trace.size(); ++i) {
+    EXPECT_LE(trace[i].frame - trace[i - 1].frame, 10u) << "no step between frames "
+                                                        << trace[i - 1].frame << " and " << trace[i].frame;
+  }
+  return consumer;
+}
+
+TEST(Federation, SilentWriterIsReportedByTopicAndFailsTheReader) {
+  const auto c = run_with_paused_writer(true, 143);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->exit_code(), 1) << c->output();
+  EXPECT_NE(c->output().find("fault=silent_writer count=1: fedsim/pilot_controls: a matched writer "
+                             "wrote nothing for 10 frames"),
+            std::string::npos)
+      << c->output();
+  EXPECT_NE(c->output().find("topic=fedsim/pilot_controls: its writer writes again"),
+            std::string::npos)
+      << c->output();
+
+  const auto d = run_with_paused_writer(false, 144);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->exit_code(), 0) << d->output();
+  EXPECT_EQ(d->output().find("silent_writer"), std::string::npos) << d->output();
 }
 
 TEST(Federation, BadInputProfileStopsTheIoFederateWithFileAndLine) {

@@ -48,7 +48,7 @@ Deployment read(const ConfigNode& root) {
   }
   d.qos_file = root.string_or("qos_file", "${SOURCE_DIR}/qos/fedsim_qos.xml");
   d.participant_profile = root.string_or("participant_profile", "fedsim_loopback");
-  d.sync_qos = root.choice_or("sync_qos", {"reliable", "best_effort"}, "reliable");
+  d.sync_qos = root.choice_or("sync_qos", {"best_effort", "reliable"}, "best_effort");
   if (root.has("timing")) {
     const auto timing = root.child("timing");
     timing.reject_unknown_keys({"args", "enabled"});

@@ -7,7 +7,7 @@
 //   domain: 0                 # FEDSIM_DOMAIN / --domain override
 //   qos_file: ${SOURCE_DIR}/qos/fedsim_qos.xml
 //   participant_profile: fedsim_loopback
-//   sync_qos: reliable        # tick/acknowledgement QoS for every federate: reliable | best_effort
+//   sync_qos: best_effort     # tick/acknowledgement QoS for every federate: best_effort | reliable
 //   timing: {args: [--frames, "3000"]}
 //   federates:
 //     - {name: io, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/x.csv"]}
@@ -43,7 +43,7 @@ struct Deployment {
   bool domain_given = false;
   std::string qos_file;
   std::string participant_profile = "fedsim_loopback";
-  std::string sync_qos = "reliable";  // tick/frame_done QoS of every federate: reliable | best_effort
+  std::string sync_qos = "best_effort";  // tick/frame_done QoS of every federate: best_effort | reliable
   std::vector<std::string> timing_args;
   bool has_timing = true;
   std::vector<FederateSpec> federates;

@@ -86,10 +86,8 @@ void add_record(CLI::App& app) {
                   "data_reader QoS profile for every topic (default: match the writers' QoS)");
   cmd->add_option("--frames", options->max_frames,
                   "lockstep member: stop after this many frames (0 = no limit)");
-  cmd->add_option("--sync-qos", options->sync_qos_suffix,
-                  "lockstep member: tick/acknowledgement QoS, reliable | best_effort")
-      ->transform([](const std::string& v) { return v == "best_effort" ? "_best_effort" : ""; })
-      ->check(CLI::IsMember({"reliable", "best_effort", "", "_best_effort"}));
+  runtime::add_sync_qos_option(*cmd, options->sync_qos_suffix,
+                               "lockstep member: tick/acknowledgement QoS, best_effort | reliable");
   cmd->add_option("--input-timeout", options->input_timeout_s,
                   "lockstep member: seconds to wait for a missing sample before stepping")
       ->check(CLI::PositiveNumber)

@@ -57,7 +57,7 @@ struct RecordOptions {
   // Federate settings (lockstep member only).
   std::uint64_t max_frames = 0;
   double input_timeout_s = 1.0;
-  std::string sync_qos_suffix;  // lockstep member: "" (reliable) or "_best_effort" tick/frame_done
+  std::string sync_qos_suffix;  // lockstep member: "" (best effort) or "_reliable" tick/frame_done
   std::string log_level = "info";
 };
 
