@@ -12,8 +12,8 @@
 // leaves the limit in the very next step. (Without this the state would have to "unwind" the
 // excess first: the windup of an integrator followed by a separate saturation.)
 //
-// peek() and hold() let a caller (the PID's conditional integration) decide per step whether to
-// integrate.
+// Starts at output 0 (clamped into the limits when they exclude 0). peek() and hold() let a
+// caller (the PID's conditional integration) decide per step whether to integrate.
 #pragma once
 
 #include <limits>

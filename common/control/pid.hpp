@@ -18,7 +18,8 @@
 // Bumpless transfer: engage(e, u_now) sets the state so that the output equals u_now (the
 // current command of whatever drove the actuator) for the error e: the derivative filter at
 // rest on e (no kick), the integral at u_now - Kp e. The following steps continue from u_now at
-// the rate Ki e the integral implies.
+// the rate Ki e the integral implies. (With Ki = 0 the integral is the constant offset engage set:
+// a PD keeps the trim it took over.)
 #pragma once
 
 #include <limits>
