@@ -123,7 +123,9 @@ TEST(ParameterValidation, IntegratorAndPid) {
        },
        "derivative_filter_time_constant_s"},
       {"pid roll-off Nyquist",
-       [&] { Pid(with([](PidParameters& p) { p.derivative_filter_time_constant_s = 0.001; }), dt); },
+       [&] {
+         Pid(with([](PidParameters& p) { p.derivative_filter_time_constant_s = 0.001; }), dt);
+       },
        [&] { Pid(good, dt); }, "roll-off 1/derivative_filter_time_constant_s"},
       {"pid limits", [&] { Pid(with([](PidParameters& p) { p.output_max = kNan; }), dt); },
        [&] { Pid(good, dt); }, "output_max"},

@@ -63,7 +63,8 @@ TEST(Pid, FilteredDerivativeOfAStepDecaysWithTheFilterTimeConstant) {
   Pid pid(pid_parameters(0.0, 0.0, kd, tau_f), dt);
   for (int n = 0; n < 300; ++n) {
     const double t = n * dt + 0.5 * dt;
-    ASSERT_NEAR(pid.step(1.0), kd / tau_f * std::exp(-t / tau_f), 0.25 * (dt / tau_f) * (dt / tau_f) * kd / tau_f) << n;
+    const double tolerance = 0.25 * (dt / tau_f) * (dt / tau_f) * kd / tau_f;
+    ASSERT_NEAR(pid.step(1.0), kd / tau_f * std::exp(-t / tau_f), tolerance) << n;
   }
 }
 

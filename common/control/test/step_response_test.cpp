@@ -91,7 +91,8 @@ TEST_P(SecondOrderStep, OvershootsByTheClassicalFigureAtTheClassicalTime) {
   const double zeta = GetParam(), wn = units::kTwoPi, dt = 0.002;  // 1 Hz at 500 Hz
   const std::vector<double> y = unit_step_response(SecondOrderLowPass(wn, zeta, dt), 3000);
   for (int n = 0; n < 3000; ++n) {
-    ASSERT_NEAR(y[n], second_order_step(n * dt + 0.5 * dt, wn, zeta), step_tolerance(dt, 1.0 / wn)) << "n = " << n;
+    ASSERT_NEAR(y[n], second_order_step(n * dt + 0.5 * dt, wn, zeta), step_tolerance(dt, 1.0 / wn))
+        << "n = " << n;
   }
   const auto peak = std::max_element(y.begin(), y.end());
   const double overshoot = *peak - 1.0;
@@ -107,7 +108,8 @@ TEST(StepResponse, CriticallyDampedLowPassDoesNotOvershoot) {
   const std::vector<double> y = unit_step_response(SecondOrderLowPass(wn, 1.0, dt), 2000);
   for (int n = 0; n < 2000; ++n) {
     const double t = n * dt + 0.5 * dt;
-    ASSERT_NEAR(y[n], 1.0 - std::exp(-wn * t) * (1.0 + wn * t), step_tolerance(dt, 1.0 / wn)) << "n = " << n;
+    ASSERT_NEAR(y[n], 1.0 - std::exp(-wn * t) * (1.0 + wn * t), step_tolerance(dt, 1.0 / wn))
+        << "n = " << n;
   }
   EXPECT_LE(*std::max_element(y.begin(), y.end()), 1.0 + 1e-12);
 }
