@@ -14,6 +14,11 @@ namespace {
 constexpr double kMaxIntegrationRateHz = 10000.0;
 constexpr double kMaxStepS = 60.0;
 
+const InsConfig& checked(const InsConfig& config) {
+  config.check();
+  return config;
+}
+
 NavigationState aligned_state(const NavigationState& truth, const InitialErrors& e) {
   return perturbed_state(truth, e.position_ned_m, e.velocity_ned_mps, e.tilt_ned_rad);
 }
@@ -34,7 +39,7 @@ void InsConfig::check() const {
 InertialNavigationSystem::InertialNavigationSystem(const InsConfig& config,
                                                    const NavigationState& alignment_truth,
                                                    const InitialErrors& initial_errors)
-    : config_((config.check(), config)),
+    : config_(checked(config)),
       imu_(config.imu_errors, config.noise_seed),
       mechanisation_(aligned_state(alignment_truth, initial_errors)),
       baro_loop_(config.baro_loop_time_constant_s) {}
