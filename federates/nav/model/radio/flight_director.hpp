@@ -22,8 +22,9 @@
 // needs 22 deg); 30 deg intercept at full scale, the largest intercept ATC gives onto a final
 // approach course (FAA JO 7110.65 5-9-2). Linearised, the cross-track offset y then obeys
 // tau_psi y'' + y' + y / tau_y = 0 with tau_y = y_fullscale / (V K), damping
-// 0.5 sqrt(tau_y / tau_psi): ~0.8 on a localizer 5 NM out and ~0.4 at the threshold at 60 m/s,
-// so the law needs no gain schedule for approach speeds (a faster jet is better damped still).
+// 0.5 sqrt(tau_y / tau_psi) (roll lag neglected): on a localizer ~0.8 at 5 NM and ~0.4 at the
+// threshold at 60 m/s, ~0.7 and ~0.37 at a jet's 75 m/s: stable without a gain schedule to the
+// threshold (the damping falls as the beam narrows; an autoland would schedule the gain).
 // Vertical laws. A commanded flight-path angle gamma_c gives the pitch command about the current
 // pitch: theta_c = theta + (gamma_c - gamma), gamma = asin(climb rate / V) — at constant angle of
 // attack a change of pitch is a change of flight path. Limited to [-pitch_down, +pitch_up].
@@ -31,8 +32,10 @@
 //     full-scale low levels the aircraft, full-scale high doubles the descent; the height error
 //     then decays with a time constant 0.24 D / V (D the distance to the antenna): 37 s at 5 NM,
 //     7 s at 1 NM for 60 m/s, slower than the pitch response down to 0.5 NM;
-//   altitude hold: climb rate command (h_sel - h) / tau_h, tau_h = 10 s, limited to +-1000 ft/min
-//     (a comfortable 0.05 g-s change), gamma_c = asin(climb rate command / V).
+//   altitude hold: climb rate command (h_sel - h) / tau_h, tau_h = 10 s (twice the heading
+//     loop's: the path loop stays slower than the ~1 s pitch response), limited to
+//     +-1000 ft/min, gamma_c = asin(climb rate command / V).
+// Pitch limits +15 / -10 deg keep the bars inside a normal attitude envelope.
 // Below 1 m/s (on the ground) the flight path is taken as level and the bank command is 0.
 #pragma once
 

@@ -15,7 +15,8 @@ constexpr double kInnerSectorRad = 10.0 * units::kDegToRad;
 constexpr double kInnerRangeM = 18.0 * units::kNmToM;
 constexpr double kOuterSectorRad = 35.0 * units::kDegToRad;
 constexpr double kOuterRangeM = 10.0 * units::kNmToM;
-constexpr double kCeilingAboveAntennaM = 4500.0 * units::kFtToM;
+constexpr double kCeilingAboveAntennaM = 4500.0 * units::kFtToM;   // FAA AIM 1-1-9 b
+constexpr double kCeilingElevationRad = 7.0 * units::kDegToRad;    // ICAO Annex 10 3.1.3.3.2
 
 SignalStatus coverage_status(const LinkGeometry& link, double angle_off_course_rad) {
   const double off = std::abs(angle_off_course_rad);
@@ -23,7 +24,9 @@ SignalStatus coverage_status(const LinkGeometry& link, double angle_off_course_r
   const bool inner = off <= kInnerSectorRad && link.ground_distance_m <= kInnerRangeM;
   const bool outer = off <= kOuterSectorRad && link.ground_distance_m <= kOuterRangeM;
   if (!inner && !outer) return SignalStatus::kOutsideCoverage;
-  if (link.height_above_station_m > kCeilingAboveAntennaM) return SignalStatus::kOutsideCoverage;
+  const double ceiling_m = std::max(kCeilingAboveAntennaM,
+                                    link.ground_distance_m * std::tan(kCeilingElevationRad));
+  if (link.height_above_station_m > ceiling_m) return SignalStatus::kOutsideCoverage;
   return SignalStatus::kValid;
 }
 

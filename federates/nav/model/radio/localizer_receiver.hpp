@@ -12,8 +12,9 @@
 //     + = fly right ("+ = fly right" in idl/navigation.idl);
 //   valid only in front of the antenna and inside the coverage of FAA AIM 1-1-9 b (ICAO Annex 10
 //     Vol I 3.1.3.3.1's reduced limits): within 10 deg of the course to 18 NM and within 35 deg
-//     to 10 NM from the antenna, up to 4,500 ft above the antenna, and within the VHF line of
-//     sight; beyond 90 deg from the front course the aircraft is behind the antenna
+//     to 10 NM from the antenna, below the higher of 4,500 ft above the antenna (AIM) and the
+//     surface rising at 7 deg from it (ICAO Annex 10 Vol I 3.1.3.3.2), and within the VHF line
+//     of sight; beyond 90 deg from the front course the aircraft is behind the antenna
 //     (kBehindAntenna: the back course is not modelled), between 35 and 90 deg kOutsideCoverage.
 // Per-frame inputs: a bad pose gives kInvalidInput; a bad record throws std::invalid_argument.
 // False courses and multipath bends are not modelled.

@@ -14,7 +14,7 @@
 // signal lasts the nominal coverage of ICAO Annex 10 Vol I 3.1.7.3.2 (inner 150 m, middle
 // 300 m, outer 600 m, measured on the glide path and localizer course): tan(alpha) = (L / 2) /
 // h_gp with h_gp = TCH + d tan(theta) the glide-path height over a beacon d from the threshold.
-// For a 3 deg path with the outer marker at 4-7 NM that is a cone of 25-40 deg half-angle; the
+// For a 3 deg path with the outer marker at 4-7 NM that is a cone of 37-23 deg half-angle; the
 // middle and inner markers' cones are wide and low (~65 deg). The real fan patterns are
 // elliptical (wider across the course); the circular cone is a simplification.
 // If two beacons are received at once the nearer (horizontally) one is reported.

@@ -36,7 +36,7 @@ double rule_half_width_rad(const IlsApproach& ils) {
 
 TEST(Localizer, ZeroOnTheCentrelineAndOverTheThreshold) {
   const IlsApproach ils = ksfo_28r();
-  for (const double nm : {1.0, 3.0, 6.0, 10.0, 15.0}) {
+  for (const double nm : {1.0, 3.0, 6.0, 10.0, 17.0}) {
     const LocalizerReading r = read_at(ils, nm * kNm, 0.0);
     ASSERT_TRUE(r.valid()) << nm << " " << to_string(r.status);
     EXPECT_NEAR(r.deviation, 0.0, 1e-6) << nm;
@@ -95,8 +95,14 @@ TEST(Localizer, CoverageAndBehindTheAntenna) {
   EXPECT_TRUE(read_at(ils, 9 * kNm, -34, at_3000_ft).valid());
   EXPECT_EQ(read_at(ils, 9 * kNm, -36, at_3000_ft).status, SignalStatus::kOutsideCoverage);
   EXPECT_EQ(read_at(ils, 11 * kNm, 20, at_3000_ft).status, SignalStatus::kOutsideCoverage);
-  EXPECT_EQ(read_at(ils, 9 * kNm, 0, ils.localizer.elevation_m + 5000 * kFt).status,
-            SignalStatus::kOutsideCoverage);  // above 4,500 ft over the antenna
+  // The ceiling: 4,500 ft above the antenna or 7 deg up, whichever is higher (3,730 ft at 5 NM,
+  // 12,700 ft at 17 NM).
+  EXPECT_EQ(read_at(ils, 5 * kNm, 0, ils.localizer.elevation_m + 4600 * kFt).status,
+            SignalStatus::kOutsideCoverage);
+  EXPECT_TRUE(read_at(ils, 5 * kNm, 0, ils.localizer.elevation_m + 4400 * kFt).valid());
+  EXPECT_TRUE(read_at(ils, 17 * kNm, 0, ils.localizer.elevation_m + 12000 * kFt).valid());
+  EXPECT_EQ(read_at(ils, 17 * kNm, 0, ils.localizer.elevation_m + 14000 * kFt).status,
+            SignalStatus::kOutsideCoverage);
   // Beyond the antenna, on the extended centreline past the stop end: the back course.
   const GeoPoint behind = direct(ils.localizer, ils.course_true_rad / kDeg, 2 * kNm, 0);
   const LocalizerReading r = LocalizerReceiver().read(ils, pose_at(behind, 1000));
