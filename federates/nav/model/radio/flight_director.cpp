@@ -71,7 +71,7 @@ std::optional<double> FlightDirector::roll_command(const FlightDirectorInputs& i
     case LateralMode::kHeadingSelect: {
       if (!std::isfinite(in.selected_heading_true_rad)) return std::nullopt;
       const double error_rad =
-          wrap_plus_minus_pi(in.selected_heading_true_rad - in.pose.heading_true_rad);
+          wrap_pi(in.selected_heading_true_rad - in.pose.heading_true_rad);
       return bank_for_direction_error(error_rad, airspeed_mps);
     }
     case LateralMode::kNavTrack: {
@@ -86,7 +86,7 @@ std::optional<double> FlightDirector::roll_command(const FlightDirectorInputs& i
           gains_.intercept_at_full_scale_rad * std::clamp(in.course_deviation, -1.0, 1.0);
       const double direction_rad = in.ground_track_true_rad.value_or(in.pose.heading_true_rad);
       const double error_rad =
-          wrap_plus_minus_pi(in.course_true_rad + intercept_rad - direction_rad);
+          wrap_pi(in.course_true_rad + intercept_rad - direction_rad);
       return bank_for_direction_error(error_rad, airspeed_mps);
     }
   }

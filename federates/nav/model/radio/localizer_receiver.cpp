@@ -44,7 +44,7 @@ LocalizerReading LocalizerReceiver::read(const IlsApproach& approach,
   const LinkGeometry link =
       link_geometry(approach.localizer, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
   const double angle_rad =
-      wrap_plus_minus_pi(link.azimuth_from_station_true_rad - geometry.localizer_back_azimuth_rad);
+      wrap_pi(link.azimuth_from_station_true_rad - geometry.localizer_back_azimuth_rad);
   if (!within_radio_line_of_sight(approach.localizer.elevation_m, pose.altitude_msl_m,
                                   link.ground_distance_m)) {
     reading.status = SignalStatus::kBelowRadioHorizon;

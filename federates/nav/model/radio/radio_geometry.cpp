@@ -67,10 +67,4 @@ double wrap_two_pi(double angle_rad) {
   return wrapped >= units::kTwoPi ? 0.0 : wrapped;
 }
 
-double wrap_plus_minus_pi(double angle_rad) {
-  double wrapped = std::remainder(angle_rad, units::kTwoPi);
-  if (wrapped <= -units::kPi) wrapped += units::kTwoPi;
-  return wrapped;
-}
-
 }  // namespace fedsim::nav

@@ -11,6 +11,7 @@
 // and the elevation angle are unaffected to well below the receivers' resolution.
 #pragma once
 
+#include "common/math/rotation.hpp"
 #include "common/navdb/nav_records.hpp"
 
 namespace fedsim::nav {
@@ -46,9 +47,7 @@ double radio_line_of_sight_m(double height1_msl_m, double height2_msl_m);
 bool within_radio_line_of_sight(double station_msl_m, double aircraft_msl_m,
                                 double ground_distance_m);
 
-/// Angle in [0, 2 pi).
+/// Angle in [0, 2 pi) (the (-pi, pi] wrap is fedsim::wrap_pi of common/math/rotation.hpp).
 double wrap_two_pi(double angle_rad);
-/// Angle in (-pi, pi].
-double wrap_plus_minus_pi(double angle_rad);
 
 }  // namespace fedsim::nav

@@ -71,7 +71,7 @@ void VorReceiver::fill_course(double obs_course_magnetic_rad, VorReading& readin
   const double obs_rad = wrap_two_pi(obs_course_magnetic_rad);
   reading.course_true_rad = wrap_two_pi(obs_rad + reading.variation_rad);
   // Angle of the radial from the selected course: within 90 deg the course leads FROM the station.
-  const double off_course_rad = wrap_plus_minus_pi(reading.radial_magnetic_rad - obs_rad);
+  const double off_course_rad = wrap_pi(reading.radial_magnetic_rad - obs_rad);
   const double abs_off_rad = std::abs(off_course_rad);
   if (abs_off_rad < units::kHalfPi - settings_.to_from_band_rad) {
     reading.to_from = ToFrom::kFrom;
@@ -82,7 +82,7 @@ void VorReceiver::fill_course(double obs_course_magnetic_rad, VorReading& readin
   }
   reading.course_error_rad = abs_off_rad <= units::kHalfPi
                                  ? -off_course_rad
-                                 : wrap_plus_minus_pi(off_course_rad + units::kPi);
+                                 : wrap_pi(off_course_rad + units::kPi);
   reading.course_deviation =
       std::clamp(reading.course_error_rad / settings_.full_scale_rad, -1.0, 1.0);
 }

@@ -81,7 +81,7 @@ TEST(AdfReceiver, RelativeBearingIsBearingToStationMinusHeading) {
     EXPECT_LT(r.relative_bearing_rad, units::kTwoPi);
   }
   // Heading straight at the beacon: the needle on the nose; tail-on: 180 deg.
-  EXPECT_NEAR(wrap_plus_minus_pi(
+  EXPECT_NEAR(wrap_pi(
                   AdfReceiver().read(ndb, pose_at(p, 600, to_ndb.azimuth1_deg)).relative_bearing_rad),
               0.0, 1e-9);
   EXPECT_NEAR(AdfReceiver().read(ndb, pose_at(p, 600, to_ndb.azimuth1_deg + 180)).relative_bearing_rad,

@@ -110,7 +110,7 @@ TEST_F(NavRadioTest, IlsLocalizerGlideSlopeAndDme) {
   EXPECT_EQ(r.signal, NavSignal::kLocalizer);
   EXPECT_EQ(r.ident(), "ISFO");
   EXPECT_NEAR(r.course_deviation(), 0.0, 1e-3);
-  EXPECT_NEAR(wrap_plus_minus_pi(r.course_true_rad() - ils.course_true_rad), 0.0, 1e-12);
+  EXPECT_NEAR(wrap_pi(r.course_true_rad() - ils.course_true_rad), 0.0, 1e-12);
   ASSERT_TRUE(r.glide_slope.valid());
   EXPECT_NEAR(r.glide_slope.deviation, 0.0, 1e-6);
   ASSERT_TRUE(r.dme.valid());

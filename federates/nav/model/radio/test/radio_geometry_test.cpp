@@ -35,12 +35,12 @@ TEST(RadioGeometry, DistanceAndAzimuthsAgreeWithGeodesic) {
       const GeoPoint aircraft = direct(station, azimuth_deg, distance_m, 0.0, &forward_deg);
       const LinkGeometry link = link_geometry(station, aircraft.lat_rad, aircraft.lon_rad, 3000.0);
       EXPECT_NEAR(link.ground_distance_m, distance_m, 1e-6);
-      EXPECT_NEAR(wrap_plus_minus_pi(link.azimuth_from_station_true_rad - azimuth_deg * kDeg), 0.0,
+      EXPECT_NEAR(wrap_pi(link.azimuth_from_station_true_rad - azimuth_deg * kDeg), 0.0,
                   1e-9);
       const Inverse back = inverse(aircraft, station);  // at the aircraft, towards the station
-      EXPECT_NEAR(wrap_plus_minus_pi(link.azimuth_to_station_true_rad - back.azimuth1_deg * kDeg),
+      EXPECT_NEAR(wrap_pi(link.azimuth_to_station_true_rad - back.azimuth1_deg * kDeg),
                   0.0, 1e-9);
-      EXPECT_NEAR(wrap_plus_minus_pi(link.azimuth_to_station_true_rad -
+      EXPECT_NEAR(wrap_pi(link.azimuth_to_station_true_rad -
                                      (forward_deg + 180.0) * kDeg),
                   0.0, 1e-9);
       EXPECT_NEAR(ground_distance_m(station, aircraft.lat_rad, aircraft.lon_rad), distance_m, 1e-6);
@@ -76,8 +76,8 @@ TEST(RadioGeometry, AngleWrapping) {
   EXPECT_NEAR(wrap_two_pi(-0.5 * units::kPi), 1.5 * units::kPi, 1e-12);
   EXPECT_NEAR(wrap_two_pi(5 * units::kPi), units::kPi, 1e-12);
   EXPECT_EQ(wrap_two_pi(units::kTwoPi), 0.0);
-  EXPECT_NEAR(wrap_plus_minus_pi(1.5 * units::kPi), -0.5 * units::kPi, 1e-12);
-  EXPECT_NEAR(wrap_plus_minus_pi(-units::kPi), units::kPi, 1e-12);
+  EXPECT_NEAR(wrap_pi(1.5 * units::kPi), -0.5 * units::kPi, 1e-12);
+  EXPECT_NEAR(wrap_pi(-units::kPi), units::kPi, 1e-12);
 }
 
 }  // namespace

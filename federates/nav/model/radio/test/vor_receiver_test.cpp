@@ -31,7 +31,7 @@ TEST(VorReceiver, RadialAndDistanceAgreeWithGeodesic) {
       const VorReading r = receiver.read(sfo, pose_at(p, 10000 * kFt), 0.0);
       ASSERT_TRUE(r.valid()) << to_string(r.status);
       const Inverse ref = inverse(sfo.position, p);
-      EXPECT_NEAR(wrap_plus_minus_pi(r.radial_magnetic_rad - (ref.azimuth1_deg - kSlavedSfoDeg) * kDeg),
+      EXPECT_NEAR(wrap_pi(r.radial_magnetic_rad - (ref.azimuth1_deg - kSlavedSfoDeg) * kDeg),
                   0.0, 1e-9);
       EXPECT_NEAR(r.ground_distance_m, ref.distance_m, 1e-6);
       EXPECT_NEAR(r.variation_rad, kSlavedSfoDeg * kDeg, 1e-12);
