@@ -1,0 +1,51 @@
+#include "nav/model/radio/adf_radio.hpp"
+
+#include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/station_checks.hpp"
+
+#include <limits>
+
+namespace fedsim::nav {
+
+AdfRadio::AdfRadio(const StationSource& source, const StationOutages& outages)
+    : source_(&source), outages_(&outages) {}
+
+AdfReading AdfRadio::receive(std::uint32_t frequency_khz, const AircraftPose& pose) const {
+  AdfReading best;
+  if (failed_) {
+    best.status = SignalStatus::kReceiverFailed;
+    return best;
+  }
+  if (frequency_khz < kAdfBandLowKhz || frequency_khz > kAdfBandHighKhz) {
+    best.status = SignalStatus::kNotTuned;
+    return best;
+  }
+  if (!pose_problem(pose).empty()) {
+    best.status = SignalStatus::kInvalidInput;
+    return best;
+  }
+  double best_distance_m = std::numeric_limits<double>::infinity();
+  bool any = false;
+  for (const Navaid& navaid : source_->stations_on(frequency_khz).navaids) {
+    if (!has_ndb(navaid)) continue;
+    AdfReading candidate;
+    if (outages_->off_air(navaid.ident)) {
+      check_navaid(navaid);
+      candidate.ident = navaid.ident;
+      candidate.status = SignalStatus::kStationOffAir;
+    } else {
+      candidate = adf_.read(navaid, pose);
+    }
+    const double distance_m = ground_distance_m(navaid.position, pose.lat_rad, pose.lon_rad);
+    const bool better = !any || (candidate.valid() && !best.valid()) ||
+                        (candidate.valid() == best.valid() && distance_m < best_distance_m);
+    if (better) {
+      best = candidate;
+      best_distance_m = distance_m;
+      any = true;
+    }
+  }
+  return best;
+}
+
+}  // namespace fedsim::nav

@@ -1,0 +1,61 @@
+#include "nav/model/radio/dme_receiver.hpp"
+
+#include "common/units/units.hpp"
+#include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/station_checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fedsim::nav {
+
+namespace {
+
+bool has_vhf_paired_dme(NavaidType type) {
+  return type == NavaidType::kVorDme || type == NavaidType::kVortac || type == NavaidType::kDme ||
+         type == NavaidType::kTacan;
+}
+
+void check_antenna(const DmeStation& station) {
+  const GeoPoint& a = station.antenna;
+  if (!std::isfinite(a.lat_rad) || std::abs(a.lat_rad) > units::kHalfPi ||
+      !std::isfinite(a.lon_rad) || std::abs(a.lon_rad) > units::kPi ||
+      !std::isfinite(a.elevation_m) || std::abs(a.elevation_m) > 9000.0) {
+    throw std::invalid_argument("DME '" + station.ident + "': antenna position out of range");
+  }
+}
+
+}  // namespace
+
+std::optional<DmeStation> dme_station(const Navaid& navaid) {
+  check_navaid(navaid);
+  if (!has_vhf_paired_dme(navaid.type)) return std::nullopt;
+  return DmeStation{navaid.ident, navaid.dme.value_or(navaid.position),
+                    vhf_service_class(navaid)};
+}
+
+std::optional<DmeStation> dme_station(const IlsApproach& approach) {
+  check_approach(approach);
+  if (!approach.has_dme) return std::nullopt;
+  return DmeStation{approach.ident, approach.glide_slope, VhfServiceClass::kTerminal};
+}
+
+DmeReading DmeReceiver::read(const DmeStation& station, const AircraftPose& pose) const {
+  check_antenna(station);
+  DmeReading reading;
+  reading.ident = station.ident;
+  if (!pose_problem(pose).empty()) {
+    reading.status = SignalStatus::kInvalidInput;
+    return reading;
+  }
+  const LinkGeometry link =
+      link_geometry(station.antenna, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
+  reading.status = vhf_reception(station.service_class, link, station.antenna.elevation_m,
+                                 pose.altitude_msl_m);
+  if (reading.status != SignalStatus::kValid) return reading;
+  reading.slant_range_m = link.slant_range_m;
+  reading.ground_distance_m = link.ground_distance_m;
+  return reading;
+}
+
+}  // namespace fedsim::nav
