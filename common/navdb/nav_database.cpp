@@ -219,7 +219,7 @@ struct NavDatabase::Impl {
         within(db, navaid_query("JOIN navaids_rtree t ON t.id = n.id WHERE t.max_lat_deg >= ?1 "
                                 "AND t.min_lat_deg <= ?2 AND t.max_lon_deg >= ?3 AND "
                                 "t.min_lon_deg <= ?4")),
-        airport_runways(db, runway_query("WHERE r.airport = ?1 ORDER BY r.runway")),
+        airport_runways(db, runway_query("WHERE r.airport = ?1 ORDER BY CAST(r.runway AS INTEGER), r.runway")),
         runway(db, runway_query("WHERE r.airport = ?1 AND r.runway = ?2")),
         ils(db, ils_query("WHERE i.airport = ?1 AND i.runway = ?2")),
         airport_ils(db, ils_query("WHERE i.airport = ?1 ORDER BY i.runway")),

@@ -60,7 +60,7 @@ class NavDatabase {
   /// Every navaid, by id (for tests, tools and brute-force checks).
   std::vector<Navaid> all_navaids() const;
 
-  /// An airport's runway ends (case-insensitive ident), by designator.
+  /// An airport's runway ends (case-insensitive ident), by designator number ("1L" before "10L").
   std::vector<RunwayEndRecord> airport_runways(std::string_view airport) const;
   std::optional<RunwayEndRecord> runway(std::string_view airport, std::string_view runway) const;
 
