@@ -77,6 +77,9 @@ void check_derived(const csv::CsvRow& row, const std::string& derived) {
   std::stringstream tokens(derived);
   std::string token;
   while (std::getline(tokens, token, ';')) {
+    const auto first = token.find_first_not_of(' ');
+    if (first == std::string::npos) continue;  // "a;;b", a trailing ';'
+    token = token.substr(first, token.find_last_not_of(' ') - first + 1);
     bool known = false;
     for (const auto& c : ils_columns()) known = known || c == token;
     if (!known) row.fail("column 'derived': '" + token + "' is not a column of the ILS table");

@@ -72,7 +72,7 @@ TEST(ShippedDatabase, Ksfo28RRunwayEnd) {
 }
 
 TEST(ShippedDatabase, StationsNearThePoleAndTheAntimeridian) {
-  // ZSP, the NDB at Amundsen-Scott South Pole station (OurAirports: -89.9952, 120.929).
+  // ZSP, the TACAN at Amundsen-Scott South Pole station (OurAirports: -89.9952, 120.929).
   const auto pole = shipped().within(-90.0 * kDegToRad, 0.0, 50e3);
   EXPECT_TRUE(std::any_of(pole.begin(), pole.end(),
                           [](const NavaidHit& h) { return h.navaid.ident == "ZSP"; }));
