@@ -137,8 +137,8 @@ TEST_F(FixtureBuild, IlsCarriesItsRunwayThresholdAndSiUnits) {
   const NavDatabase db = NavDatabase::open(path_);
   const auto ils = db.ils("ksfo", "28r");
   ASSERT_TRUE(ils.has_value());
-  EXPECT_EQ(ils->ident, "ISFO");
-  EXPECT_EQ(ils->frequency_khz, 109550u);
+  EXPECT_EQ(ils->ident, "IGWQ");
+  EXPECT_EQ(ils->frequency_khz, 111700u);
   EXPECT_EQ(ils->category, "III");
   EXPECT_NEAR(ils->glide_path_angle_rad, 3.0 * units::kDegToRad, 1e-12);
   EXPECT_NEAR(ils->threshold_crossing_height_m, 55 * units::kFtToM, 1e-9);

@@ -66,7 +66,7 @@ TEST(NavCli, FindsAnAirportsRunwaysAndIls) {
       << shipped.out;
   const Result fixture = run("find KSFO", fixture_database());
   ASSERT_EQ(fixture.exit_code, 0) << fixture.err;
-  EXPECT_NE(fixture.out.find("KSFO 28R  ISFO  109.55 MHz   284   298   3.00     55 III yes"),
+  EXPECT_NE(fixture.out.find("KSFO 28R  IGWQ  111.70 MHz   284   298   3.00     55 III yes"),
             std::string::npos)
       << fixture.out;
   const Result localizer = run("find isfo", fixture_database());
