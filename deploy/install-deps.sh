@@ -10,6 +10,8 @@ PACKAGES=(
   libfastrtps-dev libfastcdr-dev libfoonathan-memory-dev fastddsgen fastdds-tools default-jre-headless
   # maths, geodesy, config, logging, CLI
   libeigen3-dev libgeographiclib-dev libyaml-cpp-dev nlohmann-json3-dev libspdlog-dev libcli11-dev
+  # navigation database (SQLite with R*Tree) and its gzip-compressed sources
+  libsqlite3-dev zlib1g-dev
   # rendering, plots, images
   libosmesa6-dev libpng-dev gnuplot-nox graphviz
   # tests

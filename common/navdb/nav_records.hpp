@@ -71,6 +71,9 @@ struct IlsApproach {
   bool has_dme = false;            // a DME paired with the localizer, at the glide slope
   std::string derived;             // fields derived by rule, ';'-separated ("" when none)
   std::string source;              // the publication each fact comes from
+  // Added with the database (common/navdb/nav_database.hpp):
+  double course_magnetic_rad = 0.0;  // published front course, magnetic [rad]
+  std::string category;            // ILS category: "I", "II" or "III"
 };
 
 /// One landing end of a runway (every runway end of OurAirports' runways.csv).
@@ -86,6 +89,8 @@ struct RunwayEndRecord {
   std::string surface;             // OurAirports' code, e.g. "ASP", "CON"
   bool lighted = false;
   bool closed = false;
+  // Added with the database (common/navdb/nav_database.hpp):
+  bool elevation_known = false;    // OurAirports leaves some end elevations empty (then 0)
 };
 
 }  // namespace fedsim::nav

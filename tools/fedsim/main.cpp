@@ -1,12 +1,16 @@
 // fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
 // `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
-// `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics.
+// `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics; `fedsim nav
+// find|near` looks up the navigation database.
 #include "fedsim/command_cli.hpp"
 #include "fedsim/graph.hpp"
 #include "fedsim/launcher.hpp"
+#include "fedsim/nav_cli.hpp"
 #include "topic/topic_commands.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include <iostream>
 
 int main(int argc, char** argv) {
   CLI::App app{"fedsim: a DDS-federated engineering flight simulator"};
@@ -36,6 +40,7 @@ int main(int argc, char** argv) {
   fedsim::launcher::add_command_commands(app, exit_code);
   fedsim::launcher::add_graph_command(app, exit_code);
   fedsim::tools::add_topic_commands(app);
+  fedsim::launcher::add_nav_commands(app, exit_code, std::cout, std::cerr);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }
