@@ -10,6 +10,7 @@
 //     the project's shared tools) back to back, since these VMs lose CPU to their host at random;
 //   - CPU steal during each phase (/proc/stat), which explains most of the tails here.
 // The last line of output is one JSON object with every figure.
+#include "common/util/cli_checks.hpp"
 #include "common/util/child_process.hpp"
 #include "common/util/latency_stats.hpp"
 #include "common/util/monotonic_clock.hpp"
@@ -177,12 +178,12 @@ int main(int argc, char** argv) {
   Options o;
   CLI::App app{"fedsim-bench-federation: frame-exchange speed of a fedsim federation"};
   app.add_option("--federates", o.federates, "synthetic federates (plus the timing federate)")
-      ->check(CLI::Range(1, 60))->capture_default_str();
+      ->check(fedsim::util::FiniteRange(1, 60))->capture_default_str();
   app.add_option("--frames", o.lockstep_frames, "lockstep frames")->capture_default_str();
   app.add_option("--realtime-seconds", o.realtime_s, "length of each realtime phase")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(fedsim::util::kFinitePositive)->capture_default_str();
   app.add_option("--domain", o.first_domain, "first of three DDS domains used")
-      ->check(CLI::Range(0, 230))->capture_default_str();
+      ->check(fedsim::util::FiniteRange(0, 230))->capture_default_str();
   app.add_option("--participant-profile", o.profile, "participant QoS profile")->capture_default_str();
   app.add_option("--sync-qos", o.sync_qos, "tick/acknowledgement QoS: best_effort | reliable")
       ->check(CLI::IsMember({"best_effort", "reliable"}))->capture_default_str();

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 #include "common/util/allocation_counter.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
@@ -104,10 +105,10 @@ int main(int argc, char** argv) {
   Options o;
   CLI::App app{"fedsim-bench-flight: batch speed of the flight model (steps per second)"};
   app.add_option("--simulated-s", o.simulated_s, "simulated seconds per measurement")
-      ->check(CLI::Range(1.0, 36000.0))
+      ->check(fedsim::util::FiniteRange(1.0, 36000.0))
       ->capture_default_str();
   app.add_option("--repeats", o.repeats, "repeats per figure (the best is kept)")
-      ->check(CLI::Range(1, 100))
+      ->check(fedsim::util::FiniteRange(1, 100))
       ->capture_default_str();
   app.add_option("--earth", o.earth, "flat | wgs84")
       ->check(CLI::IsMember({"flat", "wgs84"}))

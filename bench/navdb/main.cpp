@@ -9,6 +9,7 @@
 //   find      find(ident) for idents in the database
 // Monotonic clock per query. The last line is one JSON object with every figure.
 // Target: nearest tuned station well under 1 ms.
+#include "common/util/cli_checks.hpp"
 #include "common/navdb/nav_database.hpp"
 #include "common/units/units.hpp"
 
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
   int queries = 5000;
   std::uint64_t seed = 1;
   app.add_option("--db", db_path, "database")->capture_default_str();
-  app.add_option("--queries", queries, "queries per measurement")->check(CLI::Range(100, 10000000));
+  app.add_option("--queries", queries, "queries per measurement")->check(fedsim::util::FiniteRange(100, 10000000));
   app.add_option("--seed", seed, "random seed")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 

@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "common/runtime/federate_options.hpp"
 
 #include "common/runtime/topic_catalogue.hpp"
@@ -21,7 +22,7 @@ void add_dds_options(CLI::App& app, ParticipantOptions& options) {
     options.participant_profile = env;
   }
   app.add_option("--domain", options.domain_id, "DDS domain id (env FEDSIM_DOMAIN)")
-      ->check(CLI::Range(0, 232))
+      ->check(fedsim::util::FiniteRange(0, 232))
       ->capture_default_str();
   app.add_option("--qos-file", options.qos_file, "Fast DDS XML QoS profiles (env FEDSIM_QOS_FILE)")
       ->capture_default_str();
@@ -51,7 +52,7 @@ void add_federate_options(CLI::App& app, FederateOptions& options,
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
       ->capture_default_str();
   app.add_option("--duration", options.duration_s, "stop after this many seconds (0 = no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fedsim::util::kFiniteNonNegative);
   app.add_option("--frames", options.max_frames, "stop after stepping this many frames (0 = no limit)");
   add_sync_qos_option(app, options.sync_qos_suffix,
                       "QoS of the frame tick and acknowledgement: best_effort (the timing federate "
@@ -59,12 +60,12 @@ void add_federate_options(CLI::App& app, FederateOptions& options,
                       "middleware repairs losses; slower)");
   app.add_option("--input-timeout", options.input_timeout_s,
                  "lockstep: seconds to wait for a missing input before stepping without it")
-      ->check(CLI::PositiveNumber)
+      ->check(fedsim::util::kFinitePositive)
       ->capture_default_str();
   app.add_option("--silent-frames", options.silent_frames,
                  "report a matched writer of a per-frame topic (state, controls) that wrote "
                  "nothing for this many frames, as fault silent_writer (0 = never)")
-      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}))
+      ->check(fedsim::util::FiniteRange(std::uint64_t{0}, std::uint64_t{1000000}))
       ->capture_default_str();
 }
 

@@ -1,8 +1,18 @@
+#include "common/util/cli_checks.hpp"
 #include "io/io_component.hpp"
 
 #include "io/model/input_profile.hpp"
 
+#include "common/units/units.hpp"
+
+#include <cmath>
+
 namespace fedsim::io {
+
+std::uint32_t vhf_channel_khz(double frequency_mhz) {
+  // VOR/ILS channels are 50 kHz apart (ICAO Annex 10 Vol V 4.2): a dialled value snaps to one.
+  return static_cast<std::uint32_t>(std::lround(frequency_mhz * 1000.0 / 50.0)) * 50u;
+}
 
 void to_message(const ControlInputs& in, msg::PilotControls& out) {
   out.elevator(static_cast<float>(in[Channel::kElevator]));
@@ -22,6 +32,12 @@ void to_message(const ControlInputs& in, msg::PilotControls& out) {
   out.brake_left(static_cast<float>(in[Channel::kBrakeLeft]));
   out.brake_right(static_cast<float>(in[Channel::kBrakeRight]));
   out.nosewheel_steering(static_cast<float>(in[Channel::kNosewheelSteering]));
+  auto& radios = out.radios();
+  radios.nav1_khz(vhf_channel_khz(in[Channel::kNav1Mhz]));
+  radios.nav2_khz(vhf_channel_khz(in[Channel::kNav2Mhz]));
+  radios.adf_khz(static_cast<std::uint32_t>(std::lround(in[Channel::kAdfKhz])));
+  radios.obs1_rad(static_cast<float>(in[Channel::kObs1Deg] * units::kDegToRad));
+  radios.obs2_rad(static_cast<float>(in[Channel::kObs2Deg] * units::kDegToRad));
 }
 
 IoComponent::IoComponent(std::string name, std::unique_ptr<InputSource> source, int aircraft_id,
@@ -55,7 +71,7 @@ runtime::FederateProgram program() {
     app.add_option("--profile", o->profile, "scripted input profile (CSV: time_s + channels)")
         ->required();
     app.add_option("--aircraft-id", o->aircraft_id, "aircraft the controls fly")
-        ->check(CLI::Range(0, 65535))
+        ->check(fedsim::util::FiniteRange(0, 65535))
         ->capture_default_str();
     app.add_option("--controls-qos", o->controls_qos,
                    "QoS profile of fedsim/pilot_controls (default: the catalogue's)");

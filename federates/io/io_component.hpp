@@ -12,6 +12,8 @@
 
 namespace fedsim::io {
 
+/// A VHF NAV frequency dialled in MHz as the 50 kHz channel it selects [kHz].
+std::uint32_t vhf_channel_khz(double frequency_mhz);
 /// The pilot controls message of a set of control channels (no allocation).
 void to_message(const ControlInputs& in, msg::PilotControls& out);
 

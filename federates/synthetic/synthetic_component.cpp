@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "synthetic/synthetic_component.hpp"
 
 #include "common/util/monotonic_clock.hpp"
@@ -77,7 +78,7 @@ runtime::FederateProgram program() {
   program.description = "a load-generating federate for benchmarks and tests";
   program.add_options = [options](CLI::App& app) {
     app.add_option("--work-us", options->work_us, "busy work per frame [us]")
-        ->check(CLI::Range(0.0, 1.0e6));
+        ->check(fedsim::util::FiniteRange(0.0, 1.0e6));
     app.add_flag("--publish", options->publish, "publish a navigation-state sample every frame");
     app.add_option("--publish-qos", options->publish_qos,
                    "QoS profile of the navigation-state writer (default: the catalogue's)");

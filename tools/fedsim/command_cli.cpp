@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "fedsim/command_cli.hpp"
 #include "common/units/units.hpp"
 
@@ -119,7 +120,7 @@ msg::SimCommand run_state(msg::RunState s) {
 void add_common_options(CLI::App& cmd, CommandOptions& o) {
   runtime::add_dds_options(cmd, o.dds);
   cmd.add_option("--wait", o.wait_s, "at most this many seconds to discover the federates")
-      ->check(CLI::PositiveNumber)
+      ->check(fedsim::util::kFinitePositive)
       ->capture_default_str();
 }
 

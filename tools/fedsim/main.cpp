@@ -2,6 +2,7 @@
 // `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
 // `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics; `fedsim nav
 // find|near` looks up the navigation database.
+#include "common/util/cli_checks.hpp"
 #include "fedsim/command_cli.hpp"
 #include "fedsim/graph.hpp"
 #include "fedsim/launcher.hpp"
@@ -22,9 +23,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--mode", run.mode, "override the deployment: realtime | lockstep")
       ->check(CLI::IsMember({"realtime", "lockstep"}));
   run_cmd->add_option("--duration", run.duration_s, "stop everything after this many seconds")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fedsim::util::kFiniteNonNegative);
   run_cmd->add_option("--domain", run.domain, "DDS domain (default: FEDSIM_DOMAIN, the file, 0)")
-      ->check(CLI::Range(0, 232));
+      ->check(fedsim::util::FiniteRange(0, 232));
   run_cmd->add_option("--out", run.out_dir, "output folder (default out/<deployment name>)");
   run_cmd->add_option("--stop-grace", run.stop_grace_s, "seconds between SIGTERM and SIGKILL")
       ->capture_default_str();

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
 #include "flight/model/scenario/propeller_calibration.hpp"
@@ -53,22 +54,22 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--static-rpm", static_rpm, "published static full-throttle rpm, sea level")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(fedsim::util::kFinitePositive);
   app.add_option("--ground-roll-ft", ground_roll_ft, "published take-off ground roll (ft)")
       ->required()
-      ->check(CLI::PositiveNumber);
-  app.add_option("--flaps-deg", flaps_deg, "take-off flap setting (deg)")->check(CLI::Range(0.0, 90.0));
+      ->check(fedsim::util::kFinitePositive);
+  app.add_option("--flaps-deg", flaps_deg, "take-off flap setting (deg)")->check(fedsim::util::FiniteRange(0.0, 90.0));
   app.add_option("--rotate-kcas", rotate_kcas, "rotation speed (KCAS)")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(fedsim::util::kFinitePositive);
   CLI::Option* fade_start =
       app.add_option("--fade-start-j", fade_start_j,
                      "advance ratio up to which the factors apply in full")
-          ->check(CLI::Range(0.0, Propeller::kMaxFadeAdvanceRatio));
+          ->check(fedsim::util::FiniteRange(0.0, Propeller::kMaxFadeAdvanceRatio));
   CLI::Option* fade_end =
       app.add_option("--fade-end-j", fade_end_j,
                      "advance ratio from which the factors are 1 (linear fade in between)")
-          ->check(CLI::Range(0.0, Propeller::kMaxFadeAdvanceRatio));
+          ->check(fedsim::util::FiniteRange(0.0, Propeller::kMaxFadeAdvanceRatio));
   fade_start->needs(fade_end);
   fade_end->needs(fade_start);
   app.add_option("--rotation-elevator", targets.technique.rotation_elevator,

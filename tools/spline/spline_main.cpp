@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "common/util/cli_checks.hpp"
 #include "common/math/cubic_spline.hpp"
 #include "spline_csv.hpp"
 
@@ -44,11 +45,11 @@ int main(int argc, char** argv) {
   app.add_option("--from", from, "first x of the table (default: first data x)");
   app.add_option("--to", to, "last x of the table (default: last data x)");
   auto* step_option = app.add_option("--step", step, "x interval of the table")
-                          ->check(CLI::PositiveNumber);
+                          ->check(fedsim::util::kFinitePositive);
   app.add_option("--points", points, "number of table points (default 101)")
-      ->check(CLI::PositiveNumber)
+      ->check(fedsim::util::kFinitePositive)
       ->excludes(step_option);
-  app.add_option("--digits", digits, "significant figures written")->check(CLI::Range(3, 17));
+  app.add_option("--digits", digits, "significant figures written")->check(fedsim::util::FiniteRange(3, 17));
   CLI11_PARSE(app, argc, argv);
 
   try {

@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "tools/topic/topic_commands.hpp"
 
 #include "tools/topic/topic_tools.hpp"
@@ -21,7 +22,7 @@ void add_list(CLI::App& topic) {
   cmd->add_flag("-v,--verbose", options->verbose,
                 "show each writer's and reader's participant and QoS");
   cmd->add_option("--wait", options->wait_s, "discovery time [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fedsim::util::kFiniteNonNegative)
       ->capture_default_str();
   runtime::add_dds_options(*cmd, options->dds);
   cmd->callback([options] { exit_with(run_topic_list(*options, std::cout, std::cerr)); });
@@ -37,11 +38,11 @@ void add_echo(CLI::App& topic) {
                   "print only this field, e.g. stamp.frame, velocity_ned_mps[2], gear[0]");
   cmd->add_flag("--json", options->json, "one JSON object per line instead of YAML");
   cmd->add_option("--wait", options->wait_s, "how long to wait for the topic to appear [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fedsim::util::kFiniteNonNegative)
       ->capture_default_str();
   cmd->add_option("--timeout", options->timeout_s,
                   "fail if --count samples have not arrived in this time [s] (0 = wait forever)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fedsim::util::kFiniteNonNegative);
   runtime::add_dds_options(*cmd, options->dds);
   cmd->callback([options] { exit_with(run_topic_echo(*options, std::cout, std::cerr)); });
 }
@@ -51,13 +52,13 @@ void add_hz(CLI::App& topic) {
   auto* cmd = topic.add_subcommand("hz", "print the receive rate of a topic once a second");
   cmd->add_option("topic", options->topic, "topic name")->required();
   cmd->add_option("-w,--window", options->window, "samples in the sliding window")
-      ->check(CLI::Range(2, 100000000))
+      ->check(fedsim::util::FiniteRange(2, 100000000))
       ->capture_default_str();
   cmd->add_option("--wait", options->wait_s, "how long to wait for the topic to appear [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fedsim::util::kFiniteNonNegative)
       ->capture_default_str();
   cmd->add_option("--duration", options->duration_s, "stop after this many seconds (0 = Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fedsim::util::kFiniteNonNegative);
   runtime::add_dds_options(*cmd, options->dds);
   cmd->callback([options] { exit_with(run_topic_hz(*options, std::cout, std::cerr)); });
 }
@@ -70,17 +71,17 @@ void add_record(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--out", options->out_dir, "output directory (created if missing)")->required();
   cmd->add_option("--duration", options->duration_s, "stop after this many seconds (0 = Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fedsim::util::kFiniteNonNegative);
   cmd->add_flag("--lockstep-member", options->lockstep_member,
                 "join the federation as a lockstep federate: every frame is recorded before it "
                 "is acknowledged");
   cmd->add_option("--name", options->name, "participant / federate name")->capture_default_str();
   cmd->add_option("--wait", options->wait_s, "discovery time for the topics' writers [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fedsim::util::kFiniteNonNegative)
       ->capture_default_str();
   cmd->add_option("--progress", options->progress_period_s,
                   "print samples written per topic every S seconds (0 = never)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fedsim::util::kFiniteNonNegative)
       ->capture_default_str();
   cmd->add_option("--reader-profile", options->reader_profile,
                   "data_reader QoS profile for every topic (default: match the writers' QoS)");
@@ -90,7 +91,7 @@ void add_record(CLI::App& app) {
                                "lockstep member: tick/acknowledgement QoS, best_effort | reliable");
   cmd->add_option("--input-timeout", options->input_timeout_s,
                   "lockstep member: seconds to wait for a missing sample before stepping")
-      ->check(CLI::PositiveNumber)
+      ->check(fedsim::util::kFinitePositive)
       ->capture_default_str();
   cmd->add_option("--log-level", options->log_level, "trace|debug|info|warn|error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))

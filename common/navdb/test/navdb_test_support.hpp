@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -17,7 +20,11 @@ inline std::string fixture(const std::string& name) {
   return std::string(FEDSIM_SOURCE_DIR) + "/common/navdb/test/data/" + name;
 }
 
-inline std::string temp_path(const std::string& name) { return testing::TempDir() + name; }
+/// A file in the test temporary folder, private to this process: ctest runs each test of a
+/// suite as its own process, in parallel, and a shared name let them overwrite each other.
+inline std::string temp_path(const std::string& name) {
+  return testing::TempDir() + std::to_string(getpid()) + "_" + name;
+}
 
 inline std::string file_text(const std::string& path) {
   std::ifstream in(path);

@@ -74,8 +74,10 @@ TEST(IdlRoundTrip, ControlsAndAircraftState) {
 TEST(IdlRoundTrip, NavigationMotionLoadingStatusVisual) {
   msg::NavigationState n;
   n.nav()[1].ident("SFO");
-  n.nav()[1].dme_distance_m(18520.0);
-  n.fd_roll_command_rad(0.3);
+  n.nav()[1].dme_slant_range_m(18520.0);
+  n.nav()[1].to_from(msg::TO_FROM_FROM);
+  n.gps().hdop(1.3);
+  n.fd().roll_command_rad(0.3);
   EXPECT_EQ(round_trip(n), n);
   msg::MotionPlatformState m;
   m.status(msg::MOTION_ENGAGED);

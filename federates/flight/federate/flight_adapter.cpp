@@ -159,6 +159,7 @@ void fill_aircraft_state(const AircraftOutputs& out, const AircraftControls& flo
   s.weight_on_wheels(out.weight_on_wheels);
   s.gear_normal_force_n(out.gear_normal_force_n);
   s.dropped_steps(out.dropped_steps);
+  s.rotating_earth(out.rotating_earth);
   const std::size_t n = std::min<std::size_t>(out.contacts.size(), s.gear().size());
   s.gear_count(static_cast<uint16_t>(n));
   for (std::size_t i = 0; i < n; ++i) {

@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "flight/federate/flight_program.hpp"
 
 #include "flight/model/aircraft/aircraft_pack.hpp"
@@ -27,7 +28,7 @@ void add_flight_options(CLI::App& app, FlightOptions& o) {
       ->check(CLI::IsMember({"euler", "rk4", "ab2", "ab3", "ab4"}))
       ->capture_default_str();
   app.add_option("--substeps", o.substeps, "integration steps per frame")
-      ->check(CLI::Range(1, 1000))
+      ->check(fedsim::util::FiniteRange(1, 1000))
       ->capture_default_str();
   app.add_option("--seed", o.seed, "turbulence seed (unless the IC file's weather names one)")
       ->capture_default_str();
@@ -46,7 +47,7 @@ void add_flight_options(CLI::App& app, FlightOptions& o) {
   app.add_option("--state-qos", o.state_qos,
                  "QoS profile of fedsim/aircraft_state (default: the catalogue's, state)");
   app.add_option("--aircraft-id", o.aircraft_id, "aircraft id (topic key)")
-      ->check(CLI::Range(0, 65535))
+      ->check(fedsim::util::FiniteRange(0, 65535))
       ->capture_default_str();
 }
 

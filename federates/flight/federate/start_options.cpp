@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "flight/federate/start_options.hpp"
 #include "common/units/units.hpp"
 
@@ -32,11 +33,11 @@ void add_start_options(CLI::App& app, StartOptions& o) {
   app.add_option("--ktas", o.ktas, "trim true airspeed [kt]");
   app.add_option("--kcas", o.kcas, "trim calibrated airspeed [kt]");
   app.add_option("--heading", o.heading_deg, "true heading [deg]")->capture_default_str();
-  app.add_option("--lat", o.lat_deg, "latitude [deg]")->check(CLI::Range(-90.0, 90.0))->capture_default_str();
-  app.add_option("--lon", o.lon_deg, "longitude [deg]")->check(CLI::Range(-180.0, 180.0))->capture_default_str();
+  app.add_option("--lat", o.lat_deg, "latitude [deg]")->check(fedsim::util::FiniteRange(-90.0, 90.0))->capture_default_str();
+  app.add_option("--lon", o.lon_deg, "longitude [deg]")->check(fedsim::util::FiniteRange(-180.0, 180.0))->capture_default_str();
   app.add_option("--gamma-deg", o.gamma_deg, "climb: flight-path angle [deg], + climbing");
   app.add_option("--bank-deg", o.bank_deg, "turn: bank angle [deg], + right");
-  app.add_option("--flaps", o.flaps, "flap setting held in the trim, 0..1")->check(CLI::Range(0.0, 1.0));
+  app.add_option("--flaps", o.flaps, "flap setting held in the trim, 0..1")->check(fedsim::util::FiniteRange(0.0, 1.0));
   app.add_option("--throttle", o.throttle,
                  "ground start (--trim ground, --airport/--runway): throttle of every engine, "
                  "0 (idle) .. 1 (full), engines settled, brakes set");

@@ -1,3 +1,4 @@
+#include "common/util/cli_checks.hpp"
 #include "flight/fly/fly_options.hpp"
 
 #include <cmath>
@@ -12,22 +13,20 @@ void add_fly_options(CLI::App& app, FlyOptions& o) {
                "add the profile's values to the start (trimmed) controls (--controls relative)");
   app.add_option("--duration", o.duration_s, "simulated time [s]")
       ->required()
-      ->check(CLI::Range(0.0, 1.0e6));
+      ->check(fedsim::util::FiniteRange(0.0, 1.0e6));
   app.add_option("--rate", o.rate_hz, "frame rate [Hz]")
       ->required()
-      ->check(CLI::Range(1.0, 100000.0));
+      ->check(fedsim::util::FiniteRange(1.0, 100000.0));
   app.add_option("--out", o.out_dir, "output folder: one CSV per topic, as fedsim record writes")
       ->required();
   app.add_option("--output-every", o.output_every, "record every Nth frame (the first and last always)")
-      ->check(CLI::Range(1, 1000000))
+      ->check(fedsim::util::FiniteRange(1, 1000000))
       ->capture_default_str();
   app.add_flag("--quiet", o.quiet, "no progress messages on stderr");
 }
 
 void check_fly_options(FlyOptions& o) {
-  // CLI::Range lets NaN through (every comparison with NaN is false).
-  if (!std::isfinite(o.duration_s)) throw std::invalid_argument("--duration must be a finite number");
-  if (!std::isfinite(o.rate_hz)) throw std::invalid_argument("--rate must be a finite number");
+  // NaN and infinities are refused by the options' checks (common/util/cli_checks.hpp).
   if (o.inputs_relative && o.inputs.empty()) {
     throw std::invalid_argument("--inputs-relative needs --inputs");
   }

@@ -14,6 +14,8 @@ constexpr std::array<ChannelInfo, kChannelCount> kChannels{{
     {"flaps", 0, 1}, {"speedbrake", 0, 1}, {"gear_down", 0, 1},
     {"brake_left", 0, 1}, {"brake_right", 0, 1},
     {"nosewheel_steering", -1, 1},
+    {"nav1_mhz", 0, 117.95}, {"nav2_mhz", 0, 117.95}, {"adf_khz", 0, 1750},
+    {"obs1_deg", 0, 360}, {"obs2_deg", 0, 360},
 }};
 
 std::vector<Channel> engine_group(Channel first) {

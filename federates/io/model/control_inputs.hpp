@@ -21,6 +21,11 @@ enum class Channel {
   kFlaps, kSpeedbrake, kGearDown,                     // 0..1 (gear: 0 up, 1 down)
   kBrakeLeft, kBrakeRight,                            // 0..1
   kNosewheelSteering,                                 // -1..1
+  // Radio tuning (the edges' units, as a pilot dials them; 0 = not tuned). A profile should
+  // change them in steps (a repeated time), not ramps, or the radio tunes through the band.
+  kNav1Mhz, kNav2Mhz,                                 // 0..117.95 MHz
+  kAdfKhz,                                            // 0..1750 kHz
+  kObs1Deg, kObs2Deg,                                 // 0..360 deg, magnetic
   kCount
 };
 constexpr int kChannelCount = static_cast<int>(Channel::kCount);

@@ -42,7 +42,7 @@ TEST(Graph, ShippedDeploymentsHaveNoProblems) {
   EXPECT_GE(checked, 2);
 }
 
-TEST(Graph, DefaultScenarioWiresIoToFlightToRecorder) {
+TEST(Graph, DefaultScenarioWiresIoToFlightToNavAndRecorder) {
   const std::string path = std::string(FEDSIM_SOURCE_DIR) + "/deploy/default.yaml";
   const DataFlowGraph graph =
       build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
@@ -51,7 +51,10 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToRecorder) {
             std::string::npos)
       << dot;
   EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
-  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> recorder"), std::string::npos);
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, recorder"),
+            std::string::npos)
+      << graph_text(graph);
+  EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> recorder"), std::string::npos);
   // docs/architecture.md shows this graph: its DOT is the code's (redraw: target docs_images).
   std::ifstream committed(std::string(FEDSIM_SOURCE_DIR) + "/docs/images/federation_default.dot");
   const std::string committed_dot((std::istreambuf_iterator<char>(committed)),

@@ -18,6 +18,7 @@ void AircraftModel::fill_outputs() {
   const MassBalance::Outputs& mass = mass_->outputs();
   AircraftOutputs& o = outputs_;
   o.time_s = time_s_;
+  o.rotating_earth = options_.earth == EarthModelKind::kWgs84;
 
   o.geodetic = e.geodetic;
   o.height_agl_m = e.height_agl_m;

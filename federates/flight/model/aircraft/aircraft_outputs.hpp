@@ -141,6 +141,11 @@ struct AircraftOutputs {
   bool numerical_fault = false;
   /// Integration steps dropped that way since the last reset (hosts count and report them).
   std::uint64_t dropped_steps = 0;
+
+  /// The earth the state refers to: true on the rotating WGS-84 earth (omega_body_radps is
+  /// relative to inertial space, earth rate included); false on the flat earth, whose NED frame
+  /// at the origin is taken as inertial. An INS or a motion cue needs to know which.
+  bool rotating_earth = false;
 };
 
 }  // namespace fedsim::flight
