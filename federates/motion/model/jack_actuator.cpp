@@ -62,11 +62,14 @@ void JackActuator::reset(double length_m) {
 }
 
 // The fastest the jack may run towards the end it is heading for and still stop at it braking at
-// cushion_deceleration: v^2 = 2 a d.
+// a = cushion_deceleration: after this sub-step's travel h v the rest must suffice,
+// v^2 = 2 a (d - h v), i.e. v = sqrt((a h)^2 + 2 a d) - a h (the discrete braking curve; the
+// continuous v = sqrt(2 a d) would brake harder than a in the last sub-steps).
 double JackActuator::cushion_speed_limit_mps(double velocity_mps) const {
   const double distance_m =
-      velocity_mps > 0.0 ? max_length_m_ - length_m_ : length_m_ - min_length_m_;
-  return std::sqrt(2.0 * parameters_.cushion_deceleration_mps2 * std::max(distance_m, 0.0));
+      std::max(velocity_mps > 0.0 ? max_length_m_ - length_m_ : length_m_ - min_length_m_, 0.0);
+  const double a_h = parameters_.cushion_deceleration_mps2 * substep_s_;
+  return std::sqrt(a_h * a_h + 2.0 * parameters_.cushion_deceleration_mps2 * distance_m) - a_h;
 }
 
 void JackActuator::step(double command_length_m) {
@@ -74,8 +77,13 @@ void JackActuator::step(double command_length_m) {
     throw std::invalid_argument("JackActuator: the command length is not finite");
   }
   const double wa = parameters_.natural_frequency_radps;
-  const double demanded_mps2 = wa * wa * (command_length_m - length_m_) -
-                               2.0 * parameters_.damping_ratio * wa * velocity_mps_;
+  // Damping taken half old, half new velocity (the 1 + zeta wa h): the discrete decay per step
+  // is (1 - zeta wa h)/(1 + zeta wa h) = exp(-2 zeta wa h) to third order, so the damping is
+  // that of the continuous servo (explicit damping would add zeta wa h/2 to zeta).
+  const double zeta_wa_h = parameters_.damping_ratio * wa * substep_s_;
+  const double demanded_mps2 = (wa * wa * (command_length_m - length_m_) -
+                                2.0 * parameters_.damping_ratio * wa * velocity_mps_) /
+                               (1.0 + zeta_wa_h);
   const double a_limit = parameters_.acceleration_limit_mps2;
   const double accelerated_mps2 = std::clamp(demanded_mps2, -a_limit, a_limit);
   const double v_limit = parameters_.velocity_limit_mps;

@@ -2,15 +2,17 @@
 // an end-stop cushion and the mechanical stroke (Allerton ch. 10.6-10.7 treat the hydraulics;
 // here the closed servo loop is represented by its response, not by flows and pressures).
 //
-//   a_cmd = wa^2 (L_cmd - L) - 2 zeta wa v          (servo, bandwidth wa)
+//   a_cmd = wa^2 (L_cmd - L) - 2 zeta wa v          (servo, bandwidth wa; the damping term
+//                                                    trapezoidal in v, see jack_actuator.cpp)
 //   a     = clamp(a_cmd, +-acceleration_limit)      (pump flow / force limit)
 //   v'    = clamp(v + a h, +-velocity_limit)        (valve flow limit)
-//   cushion: towards an end at distance d, |v'| <= sqrt(2 cushion_deceleration d)
+//   cushion: towards an end at distance d, |v'| <= sqrt(2 a_c (d - h |v'|))  (a_c: cushion
+//            deceleration; the braking curve that stops the jack exactly at the end)
 //   L'    = L + v' h, held in [min_length, max_length] (the mechanical stroke; v' = 0 there)
 //
-// integrated by semi-implicit (symplectic) Euler at the sub-step h (stable for
-// (wa h)^2 + 4 zeta wa h < 4; the constructor requires wa h <= 0.2, where the discrete natural
-// frequency is within 0.2% of wa). The cushion is the hydraulic deceleration of a jack at
+// integrated by semi-implicit (symplectic) Euler at the sub-step h (stable for wa h < 2 with the
+// trapezoidal damping; the constructor requires wa h <= 0.2, where the discrete natural
+// frequency is within 0.2% of wa and the damping within 0.1%). The cushion is the hydraulic deceleration of a jack at
 // the end of its stroke: a jack running at full speed stops within v_max^2/(2 a_cushion) of
 // the end, at a deceleration no larger than a_cushion, instead of hitting the stop.
 // Input: the commanded length per sub-step [m]; output: length [m], rate [m/s].

@@ -50,6 +50,10 @@ void validate(const MotionPlatformParameters& p, double frame_dt_s) {
         "MotionPlatformParameters: engage and park speeds must not exceed the jack velocity "
         "limit");
   }
+  control::require_positive(kBlock, "command_speed_fraction", p.command_speed_fraction);
+  if (p.command_speed_fraction > 1.0) {
+    throw std::invalid_argument("MotionPlatformParameters: command_speed_fraction must be <= 1");
+  }
   control::require_positive(kBlock, "following_error_limit_m", p.following_error_limit_m);
   control::require_positive(kBlock, "settled_tolerance_m", p.settled_tolerance_m);
   control::require_positive(kBlock, "settled_speed_mps", p.settled_speed_mps);
@@ -152,13 +156,33 @@ bool MotionPlatform::settled_at(const JackArray& target_m) const {
 void MotionPlatform::command_engaged(const MotionInputs& inputs) {
   const WashoutOutput& cue = washout_.step(
       WashoutInput{inputs.specific_force_eye_body_mps2, inputs.omega_body_radps});
-  const LimitedPose limited = limiter_.limit(cue.pose);
+  const LimitedPose limited = slowed_to_jack_speed(limiter_.limit(cue.pose));
   outputs_.demanded_pose = cue.pose;
   outputs_.commanded_pose = limited.pose;
   outputs_.workspace_scale = limited.scale;
   outputs_.workspace_limited = limited.limited;
   outputs_.specific_force_washout_p_mps2 = cue.specific_force_cue_p_mps2;
   command_m_ = limited.lengths_m;
+}
+
+// The step from last frame's commanded pose towards the target, shortened (same direction in
+// pose space) so that no jack command moves more than the allowed speed times the frame.
+LimitedPose MotionPlatform::slowed_to_jack_speed(const LimitedPose& target) {
+  const double max_step_m =
+      parameters_.command_speed_fraction * parameters_.actuator.velocity_limit_mps * frame_dt_s_;
+  double largest_step_m = 0.0;
+  for (int k = 0; k < kJackCount; ++k) {
+    largest_step_m = std::max(largest_step_m, std::abs(target.lengths_m[k] - command_m_[k]));
+  }
+  outputs_.command_rate_limited = largest_step_m > max_step_m;
+  if (!outputs_.command_rate_limited) return target;
+  const PoseVector from = to_vector(outputs_.commanded_pose);
+  const double fraction = max_step_m / largest_step_m;
+  LimitedPose slowed =
+      limiter_.limit(from_vector(from + fraction * (to_vector(target.pose) - from)));
+  slowed.limited = slowed.limited || target.limited;
+  slowed.scale = std::min(slowed.scale, target.scale);
+  return slowed;
 }
 
 // The command moves linearly from last frame's to this frame's over the sub-steps.
@@ -225,7 +249,7 @@ const MotionPlatformOutputs& MotionPlatform::step(const MotionInputs& inputs) {
   if (!valid) trip(problem);
   outputs_.specific_force_demand_mps2 =
       valid ? inputs.specific_force_eye_body_mps2 : Eigen::Vector3d::Zero();
-  outputs_.workspace_limited = false;
+  outputs_.workspace_limited = outputs_.command_rate_limited = false;
   outputs_.workspace_scale = 1.0;
   if (outputs_.status != MotionStatus::kEngaged) {
     outputs_.demanded_pose = PlatformPose{};
@@ -254,6 +278,7 @@ const MotionPlatformOutputs& MotionPlatform::step(const MotionInputs& inputs) {
   if (outputs_.status == MotionStatus::kEngaging &&
       settled_at(kinematics_->neutral_lengths_m())) {
     outputs_.status = MotionStatus::kEngaged;
+    outputs_.commanded_pose = PlatformPose{};  // the ramp ended on the neutral lengths
     washout_.reset(WashoutInput{inputs.specific_force_eye_body_mps2, inputs.omega_body_radps});
   } else if (outputs_.status == MotionStatus::kParking && settled_at(retracted_m_)) {
     outputs_.status = MotionStatus::kParked;

@@ -9,6 +9,11 @@
 //   any --trip(reason) or a detected fault--> FAULT: parks as PARKING does and stays FAULT
 //   (latched) until clear_fault() once settled, which gives PARKED.
 //
+// While engaged, the commanded pose is the washout's demand, limited to the soft workspace
+// (WorkspaceLimiter) and slowed so that no jack command moves faster than
+// command_speed_fraction x the jack velocity limit: the pose moves towards the limited demand
+// along the straight line in pose space, so a demand the jacks cannot follow is delivered late
+// but undistorted, and the servos keep a small following error.
 // Engaging and parking move every jack command at a bounded speed (engage_speed_mps,
 // park_speed_mps) from the jack's present length towards neutral or the retracted length
 // (seed 1.4.9: on an emergency "the hydraulic system should lower the platform to its lowest
@@ -50,6 +55,7 @@ struct MotionPlatformParameters {
   double engage_speed_mps = 0.15;      // jack speed while rising to neutral [m/s]
   double park_speed_mps = 0.10;        // jack speed while settling to the retracted length [m/s]
   double actuator_rate_hz = 1000.0;    // jack sub-step rate, >= 500 [Hz]
+  double command_speed_fraction = 0.9;    // jack commands move at most this x velocity limit [-]
   double following_error_limit_m = 0.25;  // |command - length| that trips a fault [m]
   double settled_tolerance_m = 1e-3;   // "at neutral" / "parked": every jack this close [m]
   double settled_speed_mps = 1e-3;     // ... and slower than this [m/s]
@@ -75,6 +81,7 @@ struct MotionPlatformOutputs {
   JackArray jack_command_m{};   // the command at the end of the frame [m]
   double workspace_scale = 1.0;     // WorkspaceLimiter's s [-]
   bool workspace_limited = false;
+  bool command_rate_limited = false;  // the commanded pose was slowed to the jacks' speed
   bool jack_rate_limited = false;   // some jack velocity/acceleration limited in this frame
   bool jack_cushioned = false;      // some jack braked in its end cushion in this frame
   Eigen::Vector3d specific_force_demand_mps2 = Eigen::Vector3d::Zero();  // the input, body
@@ -112,6 +119,7 @@ class MotionPlatform {
   void ramp_commands_towards(const JackArray& target_m, double speed_mps);
   bool settled_at(const JackArray& target_m) const;
   void command_engaged(const MotionInputs& inputs);
+  LimitedPose slowed_to_jack_speed(const LimitedPose& target);
   void run_actuators();
   void monitor_engaged();
   void update_delivered_motion();
