@@ -107,35 +107,59 @@ void ControlLoading::cut_off(const std::string& reason) {
   shaker_.reset();
 }
 
+namespace {
+
+// The first unusable input, as (axis or nullptr, field, value); field nullptr when all are
+// usable. Allocation-free: the message is only built when something is wrong.
+struct InputProblem {
+  const char* axis = nullptr;
+  const char* field = nullptr;
+  double value = 0.0;
+};
+
+}  // namespace
+
 bool ControlLoading::inputs_valid(const ControlLoadingInputs& in, std::string& problem) const {
-  std::ostringstream why;
-  for (int i = 0; i < kAxisCount; ++i) {
+  InputProblem found;
+  for (int i = 0; i < kAxisCount && found.field == nullptr; ++i) {
     const AxisInputs& a = in.axes[i];
-    const char* name = to_string(static_cast<Axis>(i));
-    if (!std::isfinite(a.pilot_force_n) || std::abs(a.pilot_force_n) > parameters_.pilot_force_limit_n) {
-      why << "input rejected: " << name << " pilot_force_n = " << a.pilot_force_n;
+    found.axis = to_string(static_cast<Axis>(i));
+    if (!std::isfinite(a.pilot_force_n) ||
+        std::abs(a.pilot_force_n) > parameters_.pilot_force_limit_n) {
+      found = {found.axis, "pilot_force_n", a.pilot_force_n};
     } else if (!in_unit_range(a.pilot_target_norm)) {
-      why << "input rejected: " << name << " pilot_target_norm = " << a.pilot_target_norm;
+      found = {found.axis, "pilot_target_norm", a.pilot_target_norm};
     } else if (!in_unit_range(a.trim_norm)) {
-      why << "input rejected: " << name << " trim_norm = " << a.trim_norm;
+      found = {found.axis, "trim_norm", a.trim_norm};
     } else if (!in_unit_range(a.backdrive_target_norm)) {
-      why << "input rejected: " << name << " backdrive_target_norm = " << a.backdrive_target_norm;
+      found = {found.axis, "backdrive_target_norm", a.backdrive_target_norm};
     }
-    if (!why.str().empty()) break;
   }
-  if (why.str().empty()) {
+  if (found.field == nullptr) {
+    found.axis = nullptr;
     if (!std::isfinite(in.qbar_pa) || in.qbar_pa < 0.0 || in.qbar_pa > parameters_.qbar_limit_pa) {
-      why << "input rejected: qbar_pa = " << in.qbar_pa;
+      found.field = "qbar_pa";
+      found.value = in.qbar_pa;
     } else if (!std::isfinite(in.alpha_rad) || std::abs(in.alpha_rad) > units::kPi) {
-      why << "input rejected: alpha_rad = " << in.alpha_rad;
+      found.field = "alpha_rad";
+      found.value = in.alpha_rad;
     } else if (!std::isfinite(in.flight_data_age_s) || in.flight_data_age_s < 0.0) {
-      why << "input rejected: flight_data_age_s = " << in.flight_data_age_s;
+      found.field = "flight_data_age_s";
+      found.value = in.flight_data_age_s;
     } else if (in.flight_data_age_s > parameters_.watchdog_timeout_s) {
-      why << "watchdog: flight data " << in.flight_data_age_s << " s old";
+      std::ostringstream why;
+      why << "watchdog: flight data " << in.flight_data_age_s << " s old (limit "
+          << parameters_.watchdog_timeout_s << " s)";
+      problem = why.str();
+      return false;
     }
   }
+  if (found.field == nullptr) return true;
+  std::ostringstream why;
+  why << "input rejected: " << (found.axis ? found.axis : "") << (found.axis ? " " : "")
+      << found.field << " = " << found.value;
   problem = why.str();
-  return problem.empty();
+  return false;
 }
 
 namespace {

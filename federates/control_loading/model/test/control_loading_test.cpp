@@ -101,8 +101,8 @@ TEST(ControlLoading, ForcesFadeInAfterEngage) {
     ++frames;
   }
   EXPECT_NEAR(frames * kFrame, 0.5, kFrame);
-  // The centring force (about 1500 N at the physical stop, 600 N once limited) builds up over
-  // 0.5 s instead of at once: no frame-to-frame step above a tenth of it.
+  // The centring force at the physical stop (over 1000 N unlimited; the loader gives 600 N at
+  // most) builds up over 0.5 s instead of at once: no frame-to-frame step above a tenth of it.
   EXPECT_GT(centring_n, 600.0);
   EXPECT_LT(largest_jump, 0.1 * centring_n);
 }
@@ -154,8 +154,7 @@ TEST(ControlLoading, StickShakerOnlyAboveItsAngleOfAttack) {
 }
 
 TEST(ControlLoading, ShakerFrequencyIsFifteenHertz) {
-  // Through the force on a column held still by a stiff simulated pilot? Simpler and exact:
-  // the loader force at the sub-step rate over one frame of 1/15 s (one period).
+  // Frames of 1 ms (one sub-step each) sample the shaking column finely enough to count it.
   ControlLoading loader = active_loader();
   ControlLoadingInputs in = cruise(6000.0, 0.3);
   loader.step(in, kFrame);

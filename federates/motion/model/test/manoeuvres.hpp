@@ -5,7 +5,8 @@
 //     f_z = -g cos(theta) - V q (the pull-up's normal acceleration).
 //   Takeoff roll: thrust builds up over 2 s to a longitudinal acceleration a, held for the
 //     roll, seeded runway roughness on f_z (0.3 m/s^2 rms, lag 0.05 s); rotation at 30 s at
-//     3 deg/s for 3 s; afterwards f_x = g sin(theta) + 0.5 m/s^2 (still accelerating).
+//     3 deg/s for 3 s (at 75 m/s: f_z = -g cos(theta) - 75 q); afterwards
+//     f_x = g sin(theta) + 0.5 m/s^2 (still accelerating).
 #pragma once
 
 #include <cmath>
