@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -79,6 +80,10 @@ TEST(ClassicalWashout, SustainedSurgeGivesOnsetCueWashoutAndTiltAtTheRateLimit) 
   EXPECT_GT(run.max_pitch_rate_radps, 0.99 * p.tilt.rate_limit_radps);  // the limit acted
   // The sustained cue is delivered by gravity: g sin(theta) = a.
   EXPECT_NEAR(run.final_cue_x_mps2, a, 1e-5);
+  std::printf("[figure] 2 m/s^2 surge step: first-frame cue %.3f m/s^2, peak surge %.3f m, "
+              "|x| < 5%% of peak after %.1f s, tilt %.3f deg at <= %.3f deg/s\n",
+              run.first_cue_mps2, run.peak_surge_m, run.time_to_5pct_s,
+              run.final_pitch_rad / units::kDegToRad, run.max_pitch_rate_radps / units::kDegToRad);
 }
 
 TEST(ClassicalWashout, WithoutTiltCoordinationNoSustainedTiltOrCue) {
@@ -179,8 +184,12 @@ TEST(ClassicalWashout, TranslationalChannelsMatchTheirTransferFunctions) {
     for (double w : {t.break_frequency_radps, 0.5 * t.natural_frequency_radps,
                      t.natural_frequency_radps, 3.0 * t.natural_frequency_radps}) {
       const complex<double> measured = measured_response(p, channel, w, 0.5);
-      expect_response(measured, translational_displacement_per_force(t, w), w,
-                      axis == 0 ? "surge" : "heave");
+      const complex<double> expected = translational_displacement_per_force(t, w);
+      expect_response(measured, expected, w, axis == 0 ? "surge" : "heave");
+      std::printf("[figure] %s at %.2f rad/s: |x/f| %.5f s^2 (analytic %.5f), phase %.2f deg "
+                  "(%.2f)\n", axis == 0 ? "surge" : "heave", w, std::abs(measured),
+                  std::abs(expected), std::arg(measured) / units::kDegToRad,
+                  std::arg(expected) / units::kDegToRad);
       // Negative control: the response tells a 20 % different break frequency apart.
       TranslationalChannelParameters other = t;
       other.natural_frequency_radps *= 1.2;
