@@ -37,13 +37,12 @@ double ControlAxis::stop_forces_n(double x, double v) const {
   if (x < soft_negative) force -= p.soft_stop_stiffness_npm * (x - soft_negative);
   if (x > p.positive_travel_m) {
     const double penetration = x - p.positive_travel_m;
-    force += std::min(0.0, -(p.hard_stop_stiffness_npm * penetration +
-                             p.hard_stop_damping_nspm * v));
+    force +=
+        std::min(0.0, -(p.hard_stop_stiffness_npm * penetration + p.hard_stop_damping_nspm * v));
   }
   if (x < -p.negative_travel_m) {
     const double penetration = -p.negative_travel_m - x;
-    force += std::max(0.0, p.hard_stop_stiffness_npm * penetration -
-                               p.hard_stop_damping_nspm * v);
+    force += std::max(0.0, p.hard_stop_stiffness_npm * penetration - p.hard_stop_damping_nspm * v);
   }
   return force;
 }
@@ -62,8 +61,8 @@ double ControlAxis::static_feel_force_n(double x, double trim_m, double gradient
 double ControlAxis::stiffest_spring_npm() const {
   const ControlAxisParameters& p = parameters_;
   const double wb = p.backdrive_natural_frequency_radps;
-  return p.gradient_max_npm + p.breakout_force_n / p.breakout_width_m +
-         p.soft_stop_stiffness_npm + p.hard_stop_stiffness_npm + p.mass_kg * wb * wb;
+  return p.gradient_max_npm + p.breakout_force_n / p.breakout_width_m + p.soft_stop_stiffness_npm +
+         p.hard_stop_stiffness_npm + p.mass_kg * wb * wb;
 }
 
 double ControlAxis::largest_damping_nspm() const {
@@ -80,10 +79,10 @@ double ControlAxis::step_backdrive_integral(const AxisDrive& drive, double h) {
   }
   const double wb = p.backdrive_natural_frequency_radps;
   const double limit = 2.0 * p.coulomb_friction_n;
-  backdrive_integral_n_ = std::clamp(
-      backdrive_integral_n_ +
-          h * p.mass_kg * wb * wb / kBackdriveIntegralTimeS * (drive.backdrive_target_m - position_m_),
-      -limit, limit);
+  backdrive_integral_n_ =
+      std::clamp(backdrive_integral_n_ + h * p.mass_kg * wb * wb / kBackdriveIntegralTimeS *
+                                             (drive.backdrive_target_m - position_m_),
+                 -limit, limit);
   return backdrive_integral_n_;
 }
 
@@ -93,8 +92,7 @@ double ControlAxis::servo_force_n(const AxisDrive& drive) const {
   if (!drive.backdrive_active) return 0.0;
   const ControlAxisParameters& p = parameters_;
   const double wb = p.backdrive_natural_frequency_radps;
-  const double hold =
-      -static_feel_force_n(drive.backdrive_target_m, trim_m_, drive.gradient_npm);
+  const double hold = -static_feel_force_n(drive.backdrive_target_m, trim_m_, drive.gradient_npm);
   const double servo = p.mass_kg * wb * wb * (drive.backdrive_target_m - position_m_) -
                        2.0 * p.backdrive_damping_ratio * p.mass_kg * wb * velocity_mps_ +
                        backdrive_integral_n_ + hold;
@@ -128,8 +126,8 @@ void ControlAxis::substep(const AxisDrive& drive, double h) {
   } else {
     friction = -dry * (in_stick_band ? sign(other) : sign(v));
   }
-  const double loader = std::clamp(without_friction + friction, -p.motor_force_limit_n,
-                                   p.motor_force_limit_n);
+  const double loader =
+      std::clamp(without_friction + friction, -p.motor_force_limit_n, p.motor_force_limit_n);
   const double net = drive.pilot_force_n + loader;
   double velocity = stuck && loader == without_friction + friction ? 0.0 : v + h * net / p.mass_kg;
   // Friction cannot reverse the motion: a step that would carry v through zero while the dry

@@ -34,13 +34,13 @@ namespace fedsim::control_loading {
 /// What acts on the axis during one sub-step (held across the sub-steps of a frame except the
 /// pilot force of a simulated pilot, recomputed every sub-step).
 struct AxisDrive {
-  double pilot_force_n = 0.0;      // the pilot's force at the grip, + along + travel [N]
-  double gradient_npm = 0.0;       // k(qbar) [N/m]
-  double trim_target_m = 0.0;      // where the trim input puts the datum [m]
+  double pilot_force_n = 0.0;  // the pilot's force at the grip, + along + travel [N]
+  double gradient_npm = 0.0;   // k(qbar) [N/m]
+  double trim_target_m = 0.0;  // where the trim input puts the datum [m]
   bool backdrive_active = false;
-  double backdrive_target_m = 0.0; // commanded position [m]
-  double shaker_force_n = 0.0;     // the shaker's force this sub-step [N]
-  double force_gain = 1.0;         // g: 1 active, 0 safe, between while fading in [-]
+  double backdrive_target_m = 0.0;  // commanded position [m]
+  double shaker_force_n = 0.0;      // the shaker's force this sub-step [N]
+  double force_gain = 1.0;          // g: 1 active, 0 safe, between while fading in [-]
 };
 
 class ControlAxis {

@@ -27,18 +27,24 @@ double stable_substep_s(double k_npm, double c_nspm, double m_kg) {
 
 const char* to_string(Axis axis) {
   switch (axis) {
-    case Axis::kPitch: return "pitch";
-    case Axis::kRoll: return "roll";
-    case Axis::kYaw: return "yaw";
+    case Axis::kPitch:
+      return "pitch";
+    case Axis::kRoll:
+      return "roll";
+    case Axis::kYaw:
+      return "yaw";
   }
   return "unknown";
 }
 
 const char* to_string(LoaderStatus status) {
   switch (status) {
-    case LoaderStatus::kSafe: return "safe";
-    case LoaderStatus::kFadingIn: return "fading_in";
-    case LoaderStatus::kActive: return "active";
+    case LoaderStatus::kSafe:
+      return "safe";
+    case LoaderStatus::kFadingIn:
+      return "fading_in";
+    case LoaderStatus::kActive:
+      return "active";
   }
   return "unknown";
 }
@@ -171,9 +177,8 @@ ControlLoadingInputs sanitized(const ControlLoadingInputs& in, double force_limi
     a.pilot_force_n = std::isfinite(a.pilot_force_n)
                           ? std::clamp(a.pilot_force_n, -force_limit_n, force_limit_n)
                           : 0.0;
-    a.pilot_target_norm = std::isfinite(a.pilot_target_norm)
-                              ? std::clamp(a.pilot_target_norm, -1.0, 1.0)
-                              : 0.0;
+    a.pilot_target_norm =
+        std::isfinite(a.pilot_target_norm) ? std::clamp(a.pilot_target_norm, -1.0, 1.0) : 0.0;
     a.trim_norm = std::isfinite(a.trim_norm) ? std::clamp(a.trim_norm, -1.0, 1.0) : 0.0;
     a.backdrive_active = false;
     a.backdrive_target_norm = 0.0;
@@ -192,8 +197,7 @@ const ControlLoadingOutputs& ControlLoading::step(const ControlLoadingInputs& ra
   std::string problem;
   const bool valid = inputs_valid(raw, problem);
   if (!valid) cut_off(problem);
-  const ControlLoadingInputs inputs =
-      valid ? raw : sanitized(raw, parameters_.pilot_force_limit_n);
+  const ControlLoadingInputs inputs = valid ? raw : sanitized(raw, parameters_.pilot_force_limit_n);
   for (int i = 0; i < kAxisCount; ++i) {
     gradient_npm_[i] = scheduled_gradient_npm(parameters_.axes[i], inputs.qbar_pa);
     outputs_.axes[i].max_loader_force_n = outputs_.axes[i].max_backdrive_force_n = 0.0;

@@ -43,13 +43,13 @@ const char* to_string(LoaderStatus status);
 struct ControlLoadingParameters {
   std::array<ControlAxisParameters, kAxisCount> axes{default_pitch_axis(), default_roll_axis(),
                                                      default_yaw_axis()};
-  double inner_rate_hz = 1000.0;           // minimum inner-loop rate, >= 1000 [Hz]
-  double shaker_alpha_rad = 0.24;          // stick shaker on at this angle of attack [rad]
-  double shaker_hysteresis_rad = 0.01;     // ... off below shaker_alpha - this [rad]
-  double watchdog_timeout_s = 0.1;         // flight data older than this cuts off [s]
-  double fade_in_s = 0.5;                  // forces fade in over this after engage() [s]
-  double pilot_force_limit_n = 1500.0;     // force sensor range: beyond it the input is invalid [N]
-  double qbar_limit_pa = 1.0e5;            // dynamic pressure beyond this is invalid [Pa]
+  double inner_rate_hz = 1000.0;        // minimum inner-loop rate, >= 1000 [Hz]
+  double shaker_alpha_rad = 0.24;       // stick shaker on at this angle of attack [rad]
+  double shaker_hysteresis_rad = 0.01;  // ... off below shaker_alpha - this [rad]
+  double watchdog_timeout_s = 0.1;      // flight data older than this cuts off [s]
+  double fade_in_s = 0.5;               // forces fade in over this after engage() [s]
+  double pilot_force_limit_n = 1500.0;  // force sensor range: beyond it the input is invalid [N]
+  double qbar_limit_pa = 1.0e5;         // dynamic pressure beyond this is invalid [Pa]
   SimulatedPilotParameters pilot;
 };
 
@@ -69,22 +69,22 @@ struct AxisInputs {
 struct ControlLoadingInputs {
   PilotSource pilot_source = PilotSource::kForceSensor;
   std::array<AxisInputs, kAxisCount> axes{};  // indexed by Axis
-  double qbar_pa = 0.0;             // dynamic pressure (AircraftState.air.qbar_pa) [Pa]
-  double alpha_rad = 0.0;           // angle of attack (AircraftState.air.alpha_rad) [rad]
-  double flight_data_age_s = 0.0;   // how old qbar/alpha are (sim time) [s]
+  double qbar_pa = 0.0;                       // dynamic pressure (AircraftState.air.qbar_pa) [Pa]
+  double alpha_rad = 0.0;                     // angle of attack (AircraftState.air.alpha_rad) [rad]
+  double flight_data_age_s = 0.0;             // how old qbar/alpha are (sim time) [s]
 };
 
 struct AxisOutputs {
-  double position_m = 0.0;          // at the grip, + along + travel [m]
-  double velocity_mps = 0.0;        // [m/s]
-  double position_norm = 0.0;       // -1..1 of the travel on its side (clamped) [-]
-  double velocity_norm_ps = 0.0;    // [1/s]
-  double feel_force_n = 0.0;        // loader + physical stop on the control, + along + travel;
-                                    //   -pilot force at rest [N]
-  double pilot_force_n = 0.0;       // the pilot's force in the last sub-step [N]
-  double trim_norm = 0.0;           // trim datum as a fraction of the trim travel [-]
-  double gradient_npm = 0.0;        // scheduled gradient [N/m]
-  double max_loader_force_n = 0.0;  // largest |loader force| over the frame's sub-steps [N]
+  double position_m = 0.0;             // at the grip, + along + travel [m]
+  double velocity_mps = 0.0;           // [m/s]
+  double position_norm = 0.0;          // -1..1 of the travel on its side (clamped) [-]
+  double velocity_norm_ps = 0.0;       // [1/s]
+  double feel_force_n = 0.0;           // loader + physical stop on the control, + along + travel;
+                                       //   -pilot force at rest [N]
+  double pilot_force_n = 0.0;          // the pilot's force in the last sub-step [N]
+  double trim_norm = 0.0;              // trim datum as a fraction of the trim travel [-]
+  double gradient_npm = 0.0;           // scheduled gradient [N/m]
+  double max_loader_force_n = 0.0;     // largest |loader force| over the frame's sub-steps [N]
   double max_backdrive_force_n = 0.0;  // largest |back-drive servo force| over the frame [N]
   bool in_soft_stop = false;
   bool in_hard_stop = false;
@@ -95,8 +95,8 @@ struct ControlLoadingOutputs {
   LoaderStatus status = LoaderStatus::kSafe;
   std::array<AxisOutputs, kAxisCount> axes{};
   bool stick_shaker = false;
-  int substeps = 0;            // sub-steps in the last frame
-  double substep_s = 0.0;      // their length [s]
+  int substeps = 0;        // sub-steps in the last frame
+  double substep_s = 0.0;  // their length [s]
 };
 
 class ControlLoading {

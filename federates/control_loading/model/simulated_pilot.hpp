@@ -9,9 +9,9 @@
 namespace fedsim::control_loading {
 
 struct SimulatedPilotParameters {
-  double hand_stiffness_npm = 4000.0;   // K_h: the arm's stiffness [N/m]
-  double hand_damping_nspm = 60.0;      // C_h [N s/m]
-  double hand_force_limit_n = 400.0;    // the most the pilot pushes [N]
+  double hand_stiffness_npm = 4000.0;  // K_h: the arm's stiffness [N/m]
+  double hand_damping_nspm = 60.0;     // C_h [N s/m]
+  double hand_force_limit_n = 400.0;   // the most the pilot pushes [N]
 };
 
 /// Every field positive and finite (std::invalid_argument naming it).

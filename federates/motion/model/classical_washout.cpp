@@ -50,11 +50,10 @@ ClassicalWashout::ClassicalWashout(const ClassicalWashoutParameters& parameters,
       rotational_{make_axis(parameters.rotational[0], dt_s),
                   make_axis(parameters.rotational[1], dt_s),
                   make_axis(parameters.rotational[2], dt_s)},
-      tilt_low_pass_{
-          control::SecondOrderLowPass(parameters.tilt.natural_frequency_radps,
-                                      parameters.tilt.damping_ratio, dt_s),
-          control::SecondOrderLowPass(parameters.tilt.natural_frequency_radps,
-                                      parameters.tilt.damping_ratio, dt_s)},
+      tilt_low_pass_{control::SecondOrderLowPass(parameters.tilt.natural_frequency_radps,
+                                                 parameters.tilt.damping_ratio, dt_s),
+                     control::SecondOrderLowPass(parameters.tilt.natural_frequency_radps,
+                                                 parameters.tilt.damping_ratio, dt_s)},
       tilt_pitch_(parameters.tilt.rate_limit_radps, dt_s),
       tilt_roll_(parameters.tilt.rate_limit_radps, dt_s) {
   reset(WashoutInput{{0.0, 0.0, -parameters.gravity_mps2}, Eigen::Vector3d::Zero()});
@@ -161,8 +160,8 @@ WashoutOutput ClassicalWashout::step(const WashoutInput& input) {
 void ClassicalWashout::reset(const WashoutInput& input) {
   require_finite_input(input);
   output_ = WashoutOutput{};
-  const Eigen::Vector3d a_i = gravity_aligned_acceleration(
-      scaled_specific_force(input.specific_force_body_mps2));
+  const Eigen::Vector3d a_i =
+      gravity_aligned_acceleration(scaled_specific_force(input.specific_force_body_mps2));
   const Eigen::Vector3d euler_rates = scaled_euler_rates(input.omega_body_radps);
   for (int i = 0; i < 3; ++i) {
     translational_[i].high_pass.reset_to_input(a_i(i));

@@ -32,9 +32,8 @@
 // omega_cue,p = T(beta_s)^-1 beta_s_dot.
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "common/control/integrator.hpp"
 #include "common/control/rate_limiter.hpp"
@@ -47,16 +46,16 @@ namespace fedsim::motion {
 
 struct WashoutInput {
   Eigen::Vector3d specific_force_body_mps2 = {0.0, 0.0, -9.80665};  // at the pilot's head [m/s^2]
-  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();        // body rates [rad/s]
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();       // body rates [rad/s]
 };
 
 struct WashoutOutput {
-  PlatformPose pose;                                          // pose to command (before limits)
-  Eigen::Vector3d acceleration_i_mps2 = Eigen::Vector3d::Zero();    // a_hp: MRP acceleration, I
+  PlatformPose pose;                                              // pose to command (before limits)
+  Eigen::Vector3d acceleration_i_mps2 = Eigen::Vector3d::Zero();  // a_hp: MRP acceleration, I
   Eigen::Vector3d specific_force_cue_p_mps2 = Eigen::Vector3d::Zero();  // delivered, P [m/s^2]
-  Eigen::Vector3d omega_cue_p_radps = Eigen::Vector3d::Zero();      // delivered rate, P [rad/s]
-  double tilt_roll_rad = 0.0;   // phi_tilt [rad]
-  double tilt_pitch_rad = 0.0;  // theta_tilt [rad]
+  Eigen::Vector3d omega_cue_p_radps = Eigen::Vector3d::Zero();          // delivered rate, P [rad/s]
+  double tilt_roll_rad = 0.0;                                           // phi_tilt [rad]
+  double tilt_pitch_rad = 0.0;                                          // theta_tilt [rad]
   bool tilt_rate_limited = false;
 };
 

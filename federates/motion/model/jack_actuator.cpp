@@ -98,8 +98,8 @@ void JackActuator::step(double command_length_m) {
   const double previous_velocity_mps = velocity_mps_;
   const double free_length_m = length_m_ + velocity_mps * substep_s_;
   length_m_ = std::clamp(free_length_m, min_length_m_, max_length_m_);
-  at_end_stop_ = length_m_ != free_length_m || length_m_ == min_length_m_ ||
-                 length_m_ == max_length_m_;
+  at_end_stop_ =
+      length_m_ != free_length_m || length_m_ == min_length_m_ || length_m_ == max_length_m_;
   if (length_m_ != free_length_m) velocity_mps = 0.0;
   velocity_mps_ = velocity_mps;
   acceleration_mps2_ = (velocity_mps_ - previous_velocity_mps) / substep_s_;

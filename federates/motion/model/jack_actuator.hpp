@@ -12,10 +12,10 @@
 //
 // integrated by semi-implicit (symplectic) Euler at the sub-step h (stable for wa h < 2 with the
 // trapezoidal damping; the constructor requires wa h <= 0.2, where the discrete natural
-// frequency is within 0.2% of wa and the damping within 0.1%). The cushion is the hydraulic deceleration of a jack at
-// the end of its stroke: a jack running at full speed stops within v_max^2/(2 a_cushion) of
-// the end, at a deceleration no larger than a_cushion, instead of hitting the stop.
-// Input: the commanded length per sub-step [m]; output: length [m], rate [m/s].
+// frequency is within 0.2% of wa and the damping within 0.1%). The cushion is the hydraulic
+// deceleration of a jack at the end of its stroke: a jack running at full speed stops within
+// v_max^2/(2 a_cushion) of the end, at a deceleration no larger than a_cushion, instead of hitting
+// the stop. Input: the commanded length per sub-step [m]; output: length [m], rate [m/s].
 #pragma once
 
 namespace fedsim::motion {
@@ -35,8 +35,8 @@ class JackActuator {
  public:
   /// Stroke [min_length_m, max_length_m] (0 < min < max), sub-step h = substep_s (with
   /// natural_frequency_radps * substep_s <= 0.2), starting at rest at initial_length_m (inside).
-  JackActuator(const JackActuatorParameters& parameters, double min_length_m,
-               double max_length_m, double substep_s, double initial_length_m);
+  JackActuator(const JackActuatorParameters& parameters, double min_length_m, double max_length_m,
+               double substep_s, double initial_length_m);
 
   /// One sub-step towards the commanded length (finite; std::invalid_argument otherwise).
   void step(double command_length_m);

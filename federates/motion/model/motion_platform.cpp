@@ -24,11 +24,16 @@ JackArray filled(double value) {
 
 const char* to_string(MotionStatus status) {
   switch (status) {
-    case MotionStatus::kParked: return "parked";
-    case MotionStatus::kEngaging: return "engaging";
-    case MotionStatus::kEngaged: return "engaged";
-    case MotionStatus::kParking: return "parking";
-    case MotionStatus::kFault: return "fault";
+    case MotionStatus::kParked:
+      return "parked";
+    case MotionStatus::kEngaging:
+      return "engaging";
+    case MotionStatus::kEngaged:
+      return "engaged";
+    case MotionStatus::kParking:
+      return "parking";
+    case MotionStatus::kFault:
+      return "fault";
   }
   return "unknown";
 }
@@ -154,8 +159,8 @@ bool MotionPlatform::settled_at(const JackArray& target_m) const {
 }
 
 void MotionPlatform::command_engaged(const MotionInputs& inputs) {
-  const WashoutOutput& cue = washout_.step(
-      WashoutInput{inputs.specific_force_eye_body_mps2, inputs.omega_body_radps});
+  const WashoutOutput& cue =
+      washout_.step(WashoutInput{inputs.specific_force_eye_body_mps2, inputs.omega_body_radps});
   const LimitedPose limited = slowed_to_jack_speed(limiter_.limit(cue.pose));
   outputs_.demanded_pose = cue.pose;
   outputs_.commanded_pose = limited.pose;
@@ -191,8 +196,7 @@ void MotionPlatform::run_actuators() {
   for (int n = 1; n <= substeps_; ++n) {
     const double fraction = static_cast<double>(n) / substeps_;
     for (int k = 0; k < kJackCount; ++k) {
-      jacks_[k].step(previous_command_m_[k] +
-                     fraction * (command_m_[k] - previous_command_m_[k]));
+      jacks_[k].step(previous_command_m_[k] + fraction * (command_m_[k] - previous_command_m_[k]));
       outputs_.jack_rate_limited = outputs_.jack_rate_limited || jacks_[k].rate_limited();
       outputs_.jack_cushioned = outputs_.jack_cushioned || jacks_[k].cushioned();
     }
@@ -253,7 +257,8 @@ const MotionPlatformOutputs& MotionPlatform::step(const MotionInputs& inputs) {
   outputs_.workspace_scale = 1.0;
   if (outputs_.status != MotionStatus::kEngaged) {
     outputs_.demanded_pose = PlatformPose{};
-    outputs_.specific_force_washout_p_mps2 = -Eigen::Vector3d(0, 0, parameters_.washout.gravity_mps2);
+    outputs_.specific_force_washout_p_mps2 =
+        -Eigen::Vector3d(0, 0, parameters_.washout.gravity_mps2);
   }
 
   switch (outputs_.status) {
@@ -275,8 +280,7 @@ const MotionPlatformOutputs& MotionPlatform::step(const MotionInputs& inputs) {
   if (outputs_.status == MotionStatus::kEngaged) monitor_engaged();
   update_delivered_motion();
 
-  if (outputs_.status == MotionStatus::kEngaging &&
-      settled_at(kinematics_->neutral_lengths_m())) {
+  if (outputs_.status == MotionStatus::kEngaging && settled_at(kinematics_->neutral_lengths_m())) {
     outputs_.status = MotionStatus::kEngaged;
     outputs_.commanded_pose = PlatformPose{};  // the ramp ended on the neutral lengths
     washout_.reset(WashoutInput{inputs.specific_force_eye_body_mps2, inputs.omega_body_radps});

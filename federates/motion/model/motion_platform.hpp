@@ -28,11 +28,10 @@
 // specific force demanded and delivered (from the delivered pose's acceleration).
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "motion/model/classical_washout.hpp"
 #include "motion/model/jack_actuator.hpp"
@@ -51,14 +50,14 @@ struct MotionPlatformParameters {
   ClassicalWashoutParameters washout;
   StewartGeometry geometry = make_symmetric_geometry(typical_60_inch_design());
   JackActuatorParameters actuator;
-  double soft_limit_margin_m = 0.05;   // workspace limit this far inside each stroke end [m]
-  double engage_speed_mps = 0.15;      // jack speed while rising to neutral [m/s]
-  double park_speed_mps = 0.10;        // jack speed while settling to the retracted length [m/s]
-  double actuator_rate_hz = 1000.0;    // jack sub-step rate, >= 500 [Hz]
+  double soft_limit_margin_m = 0.05;      // workspace limit this far inside each stroke end [m]
+  double engage_speed_mps = 0.15;         // jack speed while rising to neutral [m/s]
+  double park_speed_mps = 0.10;           // jack speed while settling to the retracted length [m/s]
+  double actuator_rate_hz = 1000.0;       // jack sub-step rate, >= 500 [Hz]
   double command_speed_fraction = 0.9;    // jack commands move at most this x velocity limit [-]
   double following_error_limit_m = 0.25;  // |command - length| that trips a fault [m]
-  double settled_tolerance_m = 1e-3;   // "at neutral" / "parked": every jack this close [m]
-  double settled_speed_mps = 1e-3;     // ... and slower than this [m/s]
+  double settled_tolerance_m = 1e-3;      // "at neutral" / "parked": every jack this close [m]
+  double settled_speed_mps = 1e-3;        // ... and slower than this [m/s]
   double specific_force_input_limit_mps2 = 100.0;  // |f| per axis beyond this: invalid [m/s^2]
   double angular_rate_input_limit_radps = 10.0;    // |omega| per axis beyond this: invalid [rad/s]
 };
@@ -68,7 +67,7 @@ void validate(const MotionPlatformParameters& parameters, double frame_dt_s);
 
 struct MotionInputs {
   Eigen::Vector3d specific_force_eye_body_mps2 = {0.0, 0.0, -9.80665};  // [m/s^2]
-  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();            // [rad/s]
+  Eigen::Vector3d omega_body_radps = Eigen::Vector3d::Zero();           // [rad/s]
 };
 
 struct MotionPlatformOutputs {
@@ -78,15 +77,15 @@ struct MotionPlatformOutputs {
   PlatformPose pose;            // delivered: forward kinematics of the jack lengths
   JackArray jack_length_m{};
   JackArray jack_velocity_mps{};
-  JackArray jack_command_m{};   // the command at the end of the frame [m]
-  double workspace_scale = 1.0;     // WorkspaceLimiter's s [-]
+  JackArray jack_command_m{};    // the command at the end of the frame [m]
+  double workspace_scale = 1.0;  // WorkspaceLimiter's s [-]
   bool workspace_limited = false;
   bool command_rate_limited = false;  // the commanded pose was slowed to the jacks' speed
-  bool jack_rate_limited = false;   // some jack velocity/acceleration limited in this frame
-  bool jack_cushioned = false;      // some jack braked in its end cushion in this frame
-  Eigen::Vector3d specific_force_demand_mps2 = Eigen::Vector3d::Zero();  // the input, body
+  bool jack_rate_limited = false;     // some jack velocity/acceleration limited in this frame
+  bool jack_cushioned = false;        // some jack braked in its end cushion in this frame
+  Eigen::Vector3d specific_force_demand_mps2 = Eigen::Vector3d::Zero();     // the input, body
   Eigen::Vector3d specific_force_washout_p_mps2 = Eigen::Vector3d::Zero();  // ideal cue, P
-  Eigen::Vector3d specific_force_cue_p_mps2 = Eigen::Vector3d::Zero();   // delivered, P
+  Eigen::Vector3d specific_force_cue_p_mps2 = Eigen::Vector3d::Zero();      // delivered, P
   int forward_iterations = 0;
 };
 

@@ -6,9 +6,8 @@
 // yaw psi) that take I to P: v_i = dcm_from_euler(attitude) v_p (common/math/rotation.hpp).
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "common/math/rotation.hpp"
 

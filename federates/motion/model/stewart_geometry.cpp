@@ -105,8 +105,7 @@ void validate(const StewartGeometry& geometry) {
   }
   for (int k = 0; k < kJackCount; ++k) {
     if (!geometry.base_joints_i_m[k].allFinite() || !geometry.top_joints_p_m[k].allFinite()) {
-      throw std::invalid_argument("StewartGeometry: joint " + std::to_string(k) +
-                                  " is not finite");
+      throw std::invalid_argument("StewartGeometry: joint " + std::to_string(k) + " is not finite");
     }
     const double neutral_length_m =
         (geometry.top_joints_p_m[k] - geometry.base_joints_i_m[k]).norm();

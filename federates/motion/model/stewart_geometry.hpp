@@ -16,9 +16,8 @@
 // length at neutral. The neutral height is chosen so that they are at mid-stroke there.
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "motion/model/platform_pose.hpp"
 
@@ -34,12 +33,13 @@ struct StewartGeometry {
 };
 
 struct SymmetricStewartDesign {
-  double base_radius_m = 0.0;             // radius of the base joint circle [m]
-  double top_radius_m = 0.0;              // radius of the upper joint circle [m]
-  double base_half_separation_rad = 0.0;  // half the azimuth between the joints of a base pair [rad]
-  double top_half_separation_rad = 0.0;   // half the azimuth between an upper pair's joints [rad]
-  double min_length_m = 0.0;              // retracted length, joint to joint [m]
-  double stroke_m = 0.0;                  // max length - min length [m]
+  double base_radius_m = 0.0;  // radius of the base joint circle [m]
+  double top_radius_m = 0.0;   // radius of the upper joint circle [m]
+  double base_half_separation_rad =
+      0.0;                               // half the azimuth between the joints of a base pair [rad]
+  double top_half_separation_rad = 0.0;  // half the azimuth between an upper pair's joints [rad]
+  double min_length_m = 0.0;             // retracted length, joint to joint [m]
+  double stroke_m = 0.0;                 // max length - min length [m]
 };
 
 /// The figures of a typical 60-inch (1.524 m) stroke six-jack flight-simulator platform (a

@@ -1,10 +1,9 @@
 #include "motion/model/stewart_kinematics.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <Eigen/Dense>
 
 #include "common/math/rotation.hpp"
 
@@ -100,8 +99,9 @@ ForwardSolution StewartKinematics::forward(const JackArray& lengths_m,
     }
   }
   if (!(tolerance_m >= 1e-14) || max_iterations < 1) {
-    throw std::invalid_argument("StewartKinematics::forward: tolerance_m >= 1e-14, "
-                                "max_iterations >= 1");
+    throw std::invalid_argument(
+        "StewartKinematics::forward: tolerance_m >= 1e-14, "
+        "max_iterations >= 1");
   }
   ForwardSolution solution;
   PoseVector q = to_vector(initial_guess);

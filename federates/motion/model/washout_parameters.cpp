@@ -50,10 +50,10 @@ void validate(const ClassicalWashoutParameters& p, double dt_s) {
     require_range(indexed("translational", i, "gain"), t.gain, 0.0, 1.0, false);
     require_frequency(indexed("translational", i, "natural_frequency_radps"),
                       t.natural_frequency_radps, dt_s);
-    require_range(indexed("translational", i, "damping_ratio"), t.damping_ratio, 0.0,
-                  kMaxDamping, true);
-    require_frequency(indexed("translational", i, "break_frequency_radps"),
-                      t.break_frequency_radps, dt_s);
+    require_range(indexed("translational", i, "damping_ratio"), t.damping_ratio, 0.0, kMaxDamping,
+                  true);
+    require_frequency(indexed("translational", i, "break_frequency_radps"), t.break_frequency_radps,
+                      dt_s);
     const RotationalChannelParameters& r = p.rotational[i];
     require_range(indexed("rotational", i, "gain"), r.gain, 0.0, 1.0, false);
     require_frequency(indexed("rotational", i, "natural_frequency_radps"),
@@ -66,8 +66,7 @@ void validate(const ClassicalWashoutParameters& p, double dt_s) {
   require_range("tilt.damping_ratio", p.tilt.damping_ratio, 0.0, kMaxDamping, true);
   require_range("tilt.rate_limit_radps", p.tilt.rate_limit_radps, 0.0, 20.0 * units::kDegToRad,
                 true);
-  require_range("tilt.angle_limit_rad", p.tilt.angle_limit_rad, 0.0, 45.0 * units::kDegToRad,
-                true);
+  require_range("tilt.angle_limit_rad", p.tilt.angle_limit_rad, 0.0, 45.0 * units::kDegToRad, true);
   require_range("specific_force_limit_mps2", p.specific_force_limit_mps2, 0.0, 100.0, true);
   require_range("gravity_mps2", p.gravity_mps2, 9.0, 10.5, false);
 }

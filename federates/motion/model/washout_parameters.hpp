@@ -14,10 +14,10 @@ namespace fedsim::motion {
 /// through  K s / ((s^2 + 2 zeta wn s + wn^2)(s + wb))  (a third-order high-pass of the
 /// acceleration, integrated twice).
 struct TranslationalChannelParameters {
-  double gain = 0.5;                         // K applied to the specific-force deviation [-], 0..1
-  double natural_frequency_radps = 2.0;      // wn of the second-order high-pass [rad/s]
-  double damping_ratio = 1.0;                // zeta [-]
-  double break_frequency_radps = 0.3;        // wb of the first-order washout [rad/s]
+  double gain = 0.5;                     // K applied to the specific-force deviation [-], 0..1
+  double natural_frequency_radps = 2.0;  // wn of the second-order high-pass [rad/s]
+  double damping_ratio = 1.0;            // zeta [-]
+  double break_frequency_radps = 0.3;    // wb of the first-order washout [rad/s]
 };
 
 /// One rotational axis (roll, pitch, yaw): angular rate -> platform angle through
@@ -33,21 +33,21 @@ struct RotationalChannelParameters {
 /// rate limit, below the pilot's threshold.
 struct TiltCoordinationParameters {
   bool enabled = true;
-  double gain = 1.0;                       // K_tilt on the low-passed specific force [-], 0..1
-  double natural_frequency_radps = 2.0;    // wn of the second-order low-pass [rad/s]
-  double damping_ratio = 1.0;              // zeta [-]
+  double gain = 1.0;                     // K_tilt on the low-passed specific force [-], 0..1
+  double natural_frequency_radps = 2.0;  // wn of the second-order low-pass [rad/s]
+  double damping_ratio = 1.0;            // zeta [-]
   double rate_limit_radps = 0.0523598775598298873;  // 3 deg/s [rad/s]
   double angle_limit_rad = 0.349065850398865915;    // 20 deg [rad]
 };
 
 struct ClassicalWashoutParameters {
   std::array<TranslationalChannelParameters, 3> translational{
-      TranslationalChannelParameters{},                      // x surge
-      TranslationalChannelParameters{},                      // y sway
+      TranslationalChannelParameters{},                     // x surge
+      TranslationalChannelParameters{},                     // y sway
       TranslationalChannelParameters{0.5, 4.0, 1.0, 0.5}};  // z heave
   std::array<RotationalChannelParameters, 3> rotational{
-      RotationalChannelParameters{},                 // roll
-      RotationalChannelParameters{},                 // pitch
+      RotationalChannelParameters{},                // roll
+      RotationalChannelParameters{},                // pitch
       RotationalChannelParameters{0.6, 0.7, 1.0}};  // yaw
   TiltCoordinationParameters tilt;
   /// |K (f - f_ref)| per axis is limited to this before the filters [m/s^2].

@@ -3,13 +3,13 @@
 // Coulomb), the end stops, back-drive, trim.
 #include "control_loading/model/control_axis.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "common/units/units.hpp"
 
@@ -52,10 +52,10 @@ std::vector<RampPoint> ramp(const ControlAxisParameters& p, double qbar_pa, doub
 
 TEST(ControlAxis, GradientIsScheduledWithDynamicPressureBetweenFloorAndCeiling) {
   const ControlAxisParameters p = default_pitch_axis();
-  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 0.0), 150.0);        // floor
-  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 2000.0), 700.0);     // 0.35 m x 2000 Pa
+  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 0.0), 150.0);     // floor
+  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 2000.0), 700.0);  // 0.35 m x 2000 Pa
   EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 8000.0), 2800.0);
-  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 50000.0), 4000.0);   // ceiling
+  EXPECT_DOUBLE_EQ(scheduled_gradient_npm(p, 50000.0), 4000.0);  // ceiling
 }
 
 TEST(ControlAxis, StaticForceDeflectionSlopeIsTheScheduledGradient) {
@@ -120,7 +120,8 @@ Oscillation release(const ControlAxisParameters& p, double qbar, double x0, doub
   for (int n = 1; n <= static_cast<int>(duration_s / kH); ++n) {
     axis.substep(drive, kH);
     const double x = axis.position_m();
-    if (previous < 0.0 && x >= 0.0) o.crossings_s.push_back((n - 1 + previous / (previous - x)) * kH);
+    if (previous < 0.0 && x >= 0.0)
+      o.crossings_s.push_back((n - 1 + previous / (previous - x)) * kH);
     if (previous > x && previous > before_previous && previous > 0.0) o.peaks_m.push_back(previous);
     before_previous = previous;
     previous = x;
@@ -133,8 +134,8 @@ TEST(ControlAxis, FreeOscillationMatchesTheMassSpringDamper) {
   p.breakout_force_n = 0.0;
   p.coulomb_friction_n = 0.0;
   const double qbar = 6000.0;
-  const double k = scheduled_gradient_npm(p, qbar);  // 2100 N/m
-  const double wn = std::sqrt(k / p.mass_kg);        // 26.46 rad/s
+  const double k = scheduled_gradient_npm(p, qbar);                               // 2100 N/m
+  const double wn = std::sqrt(k / p.mass_kg);                                     // 26.46 rad/s
   const double zeta = p.viscous_damping_nspm / (2.0 * std::sqrt(k * p.mass_kg));  // 0.126
   const double wd = wn * std::sqrt(1.0 - zeta * zeta);
   const Oscillation o = release(p, qbar, 0.03, 1.5);
@@ -143,7 +144,8 @@ TEST(ControlAxis, FreeOscillationMatchesTheMassSpringDamper) {
   const double period = (o.crossings_s[3] - o.crossings_s[0]) / 3.0;
   EXPECT_NEAR(2.0 * units::kPi / period, wd, 2e-3 * wd);
   const double decrement = std::log(o.peaks_m[0] / o.peaks_m[1]);
-  const double measured_zeta = decrement / std::sqrt(4.0 * units::kPi * units::kPi + decrement * decrement);
+  const double measured_zeta =
+      decrement / std::sqrt(4.0 * units::kPi * units::kPi + decrement * decrement);
   EXPECT_NEAR(measured_zeta, zeta, 0.01 * zeta);
   std::printf("[figure] free oscillation: wd %.3f rad/s (analytic %.3f), zeta %.4f (%.4f)\n",
               2.0 * units::kPi / period, wd, measured_zeta, zeta);
@@ -235,7 +237,8 @@ TEST(ControlAxis, EntersTheHardStopAtSpeedAndSettlesWithoutRinging) {
   const double travel = p.positive_travel_m;
   const double feel_at_travel = drive.gradient_npm * travel + p.breakout_force_n +
                                 p.soft_stop_stiffness_npm * (1.0 - p.soft_stop_fraction) * travel;
-  const double stiffness = p.hard_stop_stiffness_npm + p.soft_stop_stiffness_npm + drive.gradient_npm;
+  const double stiffness =
+      p.hard_stop_stiffness_npm + p.soft_stop_stiffness_npm + drive.gradient_npm;
   EXPECT_NEAR(axis.position_m() - travel, (250.0 - feel_at_travel) / stiffness,
               p.coulomb_friction_n / stiffness + 1e-7);
   std::printf("[figure] hard stop entered at %.2f m/s: deepest %.2f mm, rests at %.3f mm\n",

@@ -4,14 +4,14 @@
 // pilot, the felt force.
 #include "control_loading/model/control_loading.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace fedsim::control_loading {
 namespace {
@@ -66,8 +66,10 @@ TEST(ControlLoading, TheStiffestStopIsStableAtTheChosenSubstep) {
   const double h = kFrame / loader.substeps_for(kFrame);
   for (int i = 0; i < kAxisCount; ++i) {
     const ControlAxis& axis = loader.axis(static_cast<Axis>(i));
-    const double k = axis.stiffest_spring_npm() + ControlLoadingParameters{}.pilot.hand_stiffness_npm;
-    const double c = axis.largest_damping_nspm() + ControlLoadingParameters{}.pilot.hand_damping_nspm;
+    const double k =
+        axis.stiffest_spring_npm() + ControlLoadingParameters{}.pilot.hand_stiffness_npm;
+    const double c =
+        axis.largest_damping_nspm() + ControlLoadingParameters{}.pilot.hand_damping_nspm;
     const double m = axis.parameters().mass_kg;
     EXPECT_LT(spectral_radius(k, c, m, h), 1.0) << i;
     EXPECT_LT(spectral_radius(k, c, m, loader.max_stable_substep_s()), 1.0) << i;
@@ -177,8 +179,8 @@ TEST(ControlLoading, WatchdogCutsOffWithinTheFrameWhenFlightDataStop) {
   for (int n = 0; n < 60; ++n) loader.step(in, kFrame);
   const double held = pitch(loader.outputs()).position_m;  // deflected against the spring
   EXPECT_GT(held, 0.02);
-  in.axes[0].pilot_force_n = 0.0;                           // pilot lets go ...
-  in.flight_data_age_s = 0.15;                               // ... as the flight data stop
+  in.axes[0].pilot_force_n = 0.0;  // pilot lets go ...
+  in.flight_data_age_s = 0.15;     // ... as the flight data stop
   const ControlLoadingOutputs& out = loader.step(in, kFrame);
   EXPECT_EQ(out.status, LoaderStatus::kSafe);
   EXPECT_NE(loader.cut_off_reason().find("watchdog"), std::string::npos);
@@ -206,7 +208,8 @@ TEST(ControlLoading, InvalidInputsCutOffNamingTheField) {
       {"qbar_pa", [](ControlLoadingInputs& in) { in.qbar_pa = std::nan(""); }},
       {"qbar_pa", [](ControlLoadingInputs& in) { in.qbar_pa = -5.0; }},
       {"alpha_rad", [](ControlLoadingInputs& in) { in.alpha_rad = INFINITY; }},
-      {"roll pilot_force_n", [](ControlLoadingInputs& in) { in.axes[1].pilot_force_n = std::nan(""); }},
+      {"roll pilot_force_n",
+       [](ControlLoadingInputs& in) { in.axes[1].pilot_force_n = std::nan(""); }},
       {"yaw trim_norm", [](ControlLoadingInputs& in) { in.axes[2].trim_norm = 1.5; }},
       {"pitch backdrive_target_norm",
        [](ControlLoadingInputs& in) { in.axes[0].backdrive_target_norm = std::nan(""); }},
@@ -295,7 +298,8 @@ TEST(ControlLoading, BackdriveThroughTheLoader) {
   in.axes[0].backdrive_active = true;
   in.axes[0].backdrive_target_norm = -0.4;  // 40 % aft = -0.06 m
   double largest = 0.0;
-  for (int n = 0; n < 60; ++n) largest = std::max(largest, pitch(loader.step(in, kFrame)).max_backdrive_force_n);
+  for (int n = 0; n < 60; ++n)
+    largest = std::max(largest, pitch(loader.step(in, kFrame)).max_backdrive_force_n);
   EXPECT_NEAR(pitch(loader.outputs()).position_norm, -0.4, 0.01);
   EXPECT_LE(largest, default_pitch_axis().backdrive_force_limit_n + 1e-9);
 }

@@ -3,13 +3,13 @@
 // continuous transfer functions, reset, parameter and input validation.
 #include "motion/model/classical_washout.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "common/units/units.hpp"
 #include "motion/model/test/sine_fit.hpp"
@@ -24,13 +24,13 @@ constexpr double kG = 9.80665;
 WashoutInput level_flight() { return WashoutInput{{0.0, 0.0, -kG}, Eigen::Vector3d::Zero()}; }
 
 struct StepRun {
-  double first_cue_mps2 = 0.0;    // delivered specific force x in the first frame
+  double first_cue_mps2 = 0.0;  // delivered specific force x in the first frame
   double peak_surge_m = 0.0;
   double final_surge_m = 0.0;
   double final_pitch_rad = 0.0;
   double max_pitch_rate_radps = 0.0;
   double final_cue_x_mps2 = 0.0;
-  double time_to_5pct_s = -1.0;   // after the peak, |x| stays below 5 % of the peak from then
+  double time_to_5pct_s = -1.0;  // after the peak, |x| stays below 5 % of the peak from then
 };
 
 StepRun run_surge_step(const ClassicalWashoutParameters& p, double a_mps2, double duration_s) {
@@ -47,8 +47,8 @@ StepRun run_surge_step(const ClassicalWashoutParameters& p, double a_mps2, doubl
     if (n == 0) run.first_cue_mps2 = out.specific_force_cue_p_mps2.x();
     surge.push_back(out.pose.position_i_m.x());
     run.peak_surge_m = std::max(run.peak_surge_m, std::abs(out.pose.position_i_m.x()));
-    run.max_pitch_rate_radps =
-        std::max(run.max_pitch_rate_radps, std::abs(out.pose.attitude.theta_rad - previous_pitch) / kDt);
+    run.max_pitch_rate_radps = std::max(
+        run.max_pitch_rate_radps, std::abs(out.pose.attitude.theta_rad - previous_pitch) / kDt);
     previous_pitch = out.pose.attitude.theta_rad;
     run.final_cue_x_mps2 = out.specific_force_cue_p_mps2.x();
   }
@@ -80,10 +80,11 @@ TEST(ClassicalWashout, SustainedSurgeGivesOnsetCueWashoutAndTiltAtTheRateLimit) 
   EXPECT_GT(run.max_pitch_rate_radps, 0.99 * p.tilt.rate_limit_radps);  // the limit acted
   // The sustained cue is delivered by gravity: g sin(theta) = a.
   EXPECT_NEAR(run.final_cue_x_mps2, a, 1e-5);
-  std::printf("[figure] 2 m/s^2 surge step: first-frame cue %.3f m/s^2, peak surge %.3f m, "
-              "|x| < 5%% of peak after %.1f s, tilt %.3f deg at <= %.3f deg/s\n",
-              run.first_cue_mps2, run.peak_surge_m, run.time_to_5pct_s,
-              run.final_pitch_rad / units::kDegToRad, run.max_pitch_rate_radps / units::kDegToRad);
+  std::printf(
+      "[figure] 2 m/s^2 surge step: first-frame cue %.3f m/s^2, peak surge %.3f m, "
+      "|x| < 5%% of peak after %.1f s, tilt %.3f deg at <= %.3f deg/s\n",
+      run.first_cue_mps2, run.peak_surge_m, run.time_to_5pct_s,
+      run.final_pitch_rad / units::kDegToRad, run.max_pitch_rate_radps / units::kDegToRad);
 }
 
 TEST(ClassicalWashout, WithoutTiltCoordinationNoSustainedTiltOrCue) {
@@ -186,10 +187,11 @@ TEST(ClassicalWashout, TranslationalChannelsMatchTheirTransferFunctions) {
       const complex<double> measured = measured_response(p, channel, w, 0.5);
       const complex<double> expected = translational_displacement_per_force(t, w);
       expect_response(measured, expected, w, axis == 0 ? "surge" : "heave");
-      std::printf("[figure] %s at %.2f rad/s: |x/f| %.5f s^2 (analytic %.5f), phase %.2f deg "
-                  "(%.2f)\n", axis == 0 ? "surge" : "heave", w, std::abs(measured),
-                  std::abs(expected), std::arg(measured) / units::kDegToRad,
-                  std::arg(expected) / units::kDegToRad);
+      std::printf(
+          "[figure] %s at %.2f rad/s: |x/f| %.5f s^2 (analytic %.5f), phase %.2f deg "
+          "(%.2f)\n",
+          axis == 0 ? "surge" : "heave", w, std::abs(measured), std::abs(expected),
+          std::arg(measured) / units::kDegToRad, std::arg(expected) / units::kDegToRad);
       // Negative control: the response tells a 20 % different break frequency apart.
       TranslationalChannelParameters other = t;
       other.natural_frequency_radps *= 1.2;
@@ -210,8 +212,7 @@ TEST(ClassicalWashout, RotationalChannelsMatchTheirTransferFunctions) {
       expect_response(measured, rotational_angle_per_rate(r, w), w, axis == 1 ? "pitch" : "yaw");
     }
     // At wn the angle lags the rate by 0 deg and has gain K/(2 zeta wn).
-    const complex<double> at_wn =
-        measured_response(p, channel, r.natural_frequency_radps, 0.02);
+    const complex<double> at_wn = measured_response(p, channel, r.natural_frequency_radps, 0.02);
     EXPECT_NEAR(std::abs(at_wn), r.gain / (2.0 * r.damping_ratio * r.natural_frequency_radps),
                 5e-3 * std::abs(at_wn));
   }

@@ -3,11 +3,11 @@
 // mechanical stroke, validation.
 #include "motion/model/jack_actuator.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <gtest/gtest.h>
 
 namespace fedsim::motion {
 namespace {

@@ -49,8 +49,7 @@ inline std::vector<MotionInputs> pitch_doublet(double dt_s, double duration_s,
 }
 
 inline std::vector<MotionInputs> takeoff_roll(double dt_s, double duration_s,
-                                              const ManoeuvreScale& scale = {},
-                                              unsigned seed = 7) {
+                                              const ManoeuvreScale& scale = {}, unsigned seed = 7) {
   std::vector<MotionInputs> inputs;
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> roughness(0.0, 0.3);

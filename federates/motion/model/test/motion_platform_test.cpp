@@ -2,13 +2,13 @@
 // limiter on a larger manoeuvre, the delivered cue, parking and every fault path.
 #include "motion/model/motion_platform.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "motion/model/test/manoeuvres.hpp"
 
@@ -127,10 +127,11 @@ TEST(MotionPlatform, LargerManoeuvresEngageTheLimiterAndStayInsideTheStroke) {
     EXPECT_TRUE(summary.stayed_engaged) << manoeuvre;
     EXPECT_GT(summary.min_hard_margin_m, 0.0) << manoeuvre;
     EXPECT_GT(summary.min_soft_margin_m, -0.01) << manoeuvre;  // servo overshoot only
-    std::printf("[figure] violent %s: limited in %d frames, slowed in %d, closest to the "
-                "stroke end %.3f m\n",
-                manoeuvre == 0 ? "doublet" : "takeoff", summary.limited_frames,
-                summary.slowed_frames, summary.min_hard_margin_m);
+    std::printf(
+        "[figure] violent %s: limited in %d frames, slowed in %d, closest to the "
+        "stroke end %.3f m\n",
+        manoeuvre == 0 ? "doublet" : "takeoff", summary.limited_frames, summary.slowed_frames,
+        summary.min_hard_margin_m);
   }
 }
 
@@ -173,7 +174,8 @@ Descent descend(MotionPlatform& platform) {
          frames < 60 * 60) {
     const MotionPlatformOutputs& out = platform.step(level());
     ++frames;
-    if (frames * kDt > 1.0) d.fastest_after_1s_mps = std::max(d.fastest_after_1s_mps, max_speed(out));
+    if (frames * kDt > 1.0)
+      d.fastest_after_1s_mps = std::max(d.fastest_after_1s_mps, max_speed(out));
     for (double l : out.jack_length_m) d.min_length_m = std::min(d.min_length_m, l);
   }
   d.seconds = frames * kDt;

@@ -25,7 +25,8 @@ TEST(NoAllocation, PlatformFramesAllocateNothing) {
   while (platform.status() == MotionStatus::kEngaging) platform.step(MotionInputs{});
   for (const MotionInputs& in : doublet) platform.step(in);
   bool limited = false;
-  for (const MotionInputs& in : violent_doublet) limited = platform.step(in).workspace_limited || limited;
+  for (const MotionInputs& in : violent_doublet)
+    limited = platform.step(in).workspace_limited || limited;
   platform.park();
   while (platform.status() == MotionStatus::kParking) platform.step(MotionInputs{});
   EXPECT_EQ(scope.allocations(), 0u);

@@ -2,11 +2,10 @@
 // measured by simulation: gain = |(a, b)| / input amplitude, phase = atan2(b, a).
 #pragma once
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <complex>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace fedsim::motion::test {
 

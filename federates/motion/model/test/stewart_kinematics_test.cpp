@@ -4,12 +4,12 @@
 // single-axis excursions, and the workspace limiter.
 #include "motion/model/stewart_kinematics.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <random>
 #include <stdexcept>
-
-#include <gtest/gtest.h>
 
 #include "common/units/units.hpp"
 #include "motion/model/stewart_geometry.hpp"
@@ -125,8 +125,9 @@ TEST(StewartKinematics, ForwardOfInverseIsThePoseOverSeededRandomPoses) {
     ASSERT_TRUE(solution.converged) << i;
     worst_position_m = std::max(
         worst_position_m, (solution.pose.position_i_m - pose.position_i_m).cwiseAbs().maxCoeff());
-    worst_angle_rad = std::max(
-        worst_angle_rad, (to_vector(solution.pose) - to_vector(pose)).tail<3>().cwiseAbs().maxCoeff());
+    worst_angle_rad =
+        std::max(worst_angle_rad,
+                 (to_vector(solution.pose) - to_vector(pose)).tail<3>().cwiseAbs().maxCoeff());
     worst_iterations = std::max(worst_iterations, solution.iterations);
   }
   EXPECT_GT(tested, 1500);
@@ -159,8 +160,8 @@ double excursion(const StewartKinematics& k, int component, double sign) {
     const double middle = 0.5 * (inside + outside);
     PoseVector q = PoseVector::Zero();
     q(component) = sign * middle;
-    const bool ok = within(k.inverse(from_vector(q)), k.geometry().min_length_m,
-                           k.geometry().max_length_m);
+    const bool ok =
+        within(k.inverse(from_vector(q)), k.geometry().min_length_m, k.geometry().max_length_m);
     (ok ? inside : outside) = middle;
   }
   return inside;
