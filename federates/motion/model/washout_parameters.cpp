@@ -1,0 +1,74 @@
+#include "motion/model/washout_parameters.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "common/control/parameter_checks.hpp"
+#include "common/units/units.hpp"
+
+namespace fedsim::motion {
+namespace {
+
+constexpr const char* kBlock = "ClassicalWashoutParameters";
+
+[[noreturn]] void fail(const std::string& field, double value, const std::string& problem) {
+  std::ostringstream message;
+  message.precision(9);
+  message << kBlock << ": " << field << " = " << value << " " << problem;
+  throw std::invalid_argument(message.str());
+}
+
+// lower < value <= upper (lower_open) or lower <= value <= upper.
+void require_range(const std::string& field, double value, double lower, double upper,
+                   bool lower_open) {
+  const bool above = lower_open ? value > lower : value >= lower;
+  if (!std::isfinite(value) || !above || !(value <= upper)) {
+    std::ostringstream range;
+    range << "must be in " << (lower_open ? "(" : "[") << lower << ", " << upper << "]";
+    fail(field, value, range.str());
+  }
+}
+
+void require_frequency(const std::string& field, double value, double dt_s) {
+  require_range(field, value, 0.0, units::kPi / dt_s, true);
+  if (value == units::kPi / dt_s) fail(field, value, "must be below Nyquist pi/dt_s");
+}
+
+std::string indexed(const char* group, int i, const char* field) {
+  return std::string(group) + "[" + std::to_string(i) + "]." + field;
+}
+
+}  // namespace
+
+void validate(const ClassicalWashoutParameters& p, double dt_s) {
+  control::require_sample_period(kBlock, dt_s);
+  constexpr double kMaxDamping = 5.0;
+  for (int i = 0; i < 3; ++i) {
+    const TranslationalChannelParameters& t = p.translational[i];
+    require_range(indexed("translational", i, "gain"), t.gain, 0.0, 1.0, false);
+    require_frequency(indexed("translational", i, "natural_frequency_radps"),
+                      t.natural_frequency_radps, dt_s);
+    require_range(indexed("translational", i, "damping_ratio"), t.damping_ratio, 0.0, kMaxDamping,
+                  true);
+    require_frequency(indexed("translational", i, "break_frequency_radps"), t.break_frequency_radps,
+                      dt_s);
+    const RotationalChannelParameters& r = p.rotational[i];
+    require_range(indexed("rotational", i, "gain"), r.gain, 0.0, 1.0, false);
+    require_frequency(indexed("rotational", i, "natural_frequency_radps"),
+                      r.natural_frequency_radps, dt_s);
+    require_range(indexed("rotational", i, "damping_ratio"), r.damping_ratio, 0.0, kMaxDamping,
+                  true);
+  }
+  require_range("tilt.gain", p.tilt.gain, 0.0, 1.0, false);
+  require_frequency("tilt.natural_frequency_radps", p.tilt.natural_frequency_radps, dt_s);
+  require_range("tilt.damping_ratio", p.tilt.damping_ratio, 0.0, kMaxDamping, true);
+  require_range("tilt.rate_limit_radps", p.tilt.rate_limit_radps, 0.0, 20.0 * units::kDegToRad,
+                true);
+  require_range("tilt.angle_limit_rad", p.tilt.angle_limit_rad, 0.0, 45.0 * units::kDegToRad, true);
+  require_range("specific_force_limit_mps2", p.specific_force_limit_mps2, 0.0, 100.0, true);
+  require_range("gravity_mps2", p.gravity_mps2, 9.0, 10.5, false);
+}
+
+}  // namespace fedsim::motion
