@@ -10,8 +10,8 @@
 //     the project's shared tools) back to back, since these VMs lose CPU to their host at random;
 //   - CPU steal during each phase (/proc/stat), which explains most of the tails here.
 // The last line of output is one JSON object with every figure.
-#include "common/util/cli_checks.hpp"
 #include "common/util/child_process.hpp"
+#include "common/util/cli_checks.hpp"
 #include "common/util/latency_stats.hpp"
 #include "common/util/monotonic_clock.hpp"
 

@@ -9,11 +9,14 @@
 //   find      find(ident) for idents in the database
 // Monotonic clock per query. The last line is one JSON object with every figure.
 // Target: nearest tuned station well under 1 ms.
-#include "common/util/cli_checks.hpp"
 #include "common/navdb/nav_database.hpp"
+#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 
 #include <CLI/CLI.hpp>
+#include "nav/model/avionics/avionics_suite.hpp"
+#include "nav/model/avionics/database_station_source.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -73,6 +76,51 @@ nlohmann::json to_json(const Stats& s) {
 
 }  // namespace
 
+/// Per-frame cost of the navigation federate's executive (every receiver, GPS, INS, flight
+/// director) flying 50 m/s eastbound through the Frankfurt area at 3000 ft with NAV1, NAV2 and
+/// the ADF tuned to the stations nearest the start; `gps`/`ins` off measures their share.
+Stats time_suite_steps(const NavDatabase& db, int frames, bool gps, bool ins, std::string& tuned) {
+  using namespace fedsim::nav;
+  DatabaseStationSource stations(db);
+  AvionicsConfig config;
+  config.ins.imu_errors = ImuErrors::sample(ImuErrorSpec::navigation_grade(), 1);
+  AvionicsSuite suite(stations, stations.all_approaches(), config);
+  const double lat0 = 50.0379 * kDegToRad, lon0 = 8.0 * kDegToRad;
+  std::vector<std::uint32_t> vhf;
+  std::uint32_t ndb = 0;
+  tuned.clear();
+  for (const auto& hit : db.within(lat0, lon0, 60.0 * fedsim::units::kNmToM)) {
+    const Navaid& n = hit.navaid;
+    const bool is_ndb = n.type == NavaidType::kNdb || n.type == NavaidType::kNdbDme;
+    if (is_ndb && ndb == 0) {
+      ndb = n.frequency_khz;
+      tuned += "ADF " + n.ident + " ";
+    } else if (!is_ndb && vhf.size() < 2 && n.frequency_khz >= 108000) {
+      vhf.push_back(n.frequency_khz);
+      tuned += "NAV" + std::to_string(vhf.size()) + " " + n.ident + " ";
+    }
+  }
+  for (std::size_t i = 0; i < vhf.size(); ++i) suite.radios().nav[i] = {vhf[i], 0.0};
+  suite.radios().adf_khz = ndb;
+  suite.failures().gps_denied = !gps;
+  suite.failures().ins = !ins;
+  AvionicsTruth truth;
+  truth.altitude_msl_m = 914.4;
+  truth.velocity_ned_mps = {0.0, 50.0, 0.0};
+  truth.euler = {0.0, 0.0, fedsim::units::kHalfPi};
+  truth.q_ned_from_body = fedsim::quaternion_from_euler(truth.euler);
+  truth.true_airspeed_mps = 50.0;
+  truth.specific_force_body_mps2 = {0.0, 0.0, -fedsim::units::kStandardGravityMps2};
+  const double dt = 0.02;
+  const auto at = [&](int frame) {
+    truth.lat_rad = lat0;
+    truth.lon_rad = lon0 + 50.0 * dt * frame / (6378137.0 * std::cos(lat0));
+    return truth;
+  };
+  suite.align(at(0));
+  return time_queries(frames, [&](int i) { suite.step(at(i + 1), dt, dt * (i + 1)); });
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"fedsim-bench-navdb: navigation database query times"};
   std::string db_path = fedsim::nav::default_database_path();
@@ -117,6 +165,11 @@ int main(int argc, char** argv) {
       find_hits += db.find(idents[static_cast<std::size_t>(unit(random) * idents.size())]).size();
     });
 
+    std::string tuned;
+    const Stats suite_all = time_suite_steps(db, queries, true, true, tuned);
+    const Stats suite_no_gps = time_suite_steps(db, queries, false, true, tuned);
+    const Stats suite_radios = time_suite_steps(db, queries, false, false, tuned);
+
     const double per_within = static_cast<double>(within_hits) / queries;
     const double per_frequency = static_cast<double>(frequencies.size()) / distinct_frequencies;
     std::printf("fedsim-bench-navdb: %s, %zu navaids, %zu frequencies in use\n", db_path.c_str(),
@@ -127,6 +180,9 @@ int main(int argc, char** argv) {
     print("nearest", nearest, ", anywhere, " + std::to_string(per_frequency).substr(0, 5) +
                                   " stations per frequency on average");
     print("find", find, "");
+    print("nav step", suite_all, ", every receiver + GPS + INS + FD, tuned " + tuned);
+    print("  no GPS", suite_no_gps, ", GPS denied (its fix skipped)");
+    print("  radios", suite_radios, ", radios, markers and FD only");
     std::printf("target: nearest tuned station < 1000 us (p99 %.1f us: %s)\n", nearest.p99_us,
                 nearest.p99_us < 1000.0 ? "met" : "NOT MET");
     const nlohmann::json figures = {{"bench", "navdb"},
@@ -138,6 +194,9 @@ int main(int argc, char** argv) {
                                     {"nearest_found", nearest_found},
                                     {"find_ident", to_json(find)},
                                     {"find_mean_hits", static_cast<double>(find_hits) / queries},
+                                    {"nav_step", to_json(suite_all)},
+                                    {"nav_step_without_gps", to_json(suite_no_gps)},
+                                    {"nav_step_radios_only", to_json(suite_radios)},
                                     {"seed", seed}};
     std::cout << figures.dump() << std::endl;
     return nearest.p99_us < 1000.0 ? 0 : 1;

@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "common/runtime/federate_options.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "common/runtime/topic_catalogue.hpp"
 

@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "io/io_component.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "io/model/input_profile.hpp"
 

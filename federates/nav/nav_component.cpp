@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "nav/nav_component.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "common/units/units.hpp"
 

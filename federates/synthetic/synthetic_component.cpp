@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "synthetic/synthetic_component.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "common/util/monotonic_clock.hpp"
 

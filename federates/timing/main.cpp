@@ -1,6 +1,6 @@
 // fedsim-timing: the federation's frame clock. See timing_federate.hpp.
-#include "common/util/cli_checks.hpp"
 #include "common/runtime/shutdown.hpp"
+#include "common/util/cli_checks.hpp"
 #include "timing/timing_federate.hpp"
 
 #include <CLI/CLI.hpp>

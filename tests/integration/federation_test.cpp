@@ -6,6 +6,7 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
+#include "common/csv/csv_reader.hpp"
 #include "io/model/input_profile.hpp"
 
 #include <gtest/gtest.h>
@@ -552,6 +553,70 @@ TEST(Federation, CommandLineInstructorFreezesAndRuns) {
   EXPECT_GT(frozen, 20);  // ~0.5 s at 100 Hz, plus the command's own discovery time
   EXPECT_GT(running_after_freeze, 20);
 }
+
+// The C172 flown eastbound across the San Francisco VOR-DME by a whole federation (timing, I/O,
+// flight, navigation, recorder over DDS): NAV1, tuned by the pilot's profile (not by the
+// navigation federate's options), reads TO before the station and FROM after it, the DME
+// distance falls and then grows, and NAV2, left untuned, stays flagged.
+TEST(NavFederation, FlyingAcrossAVorTheFlagTurnsFromToToFrom) {
+  const int domain = 145;
+  const std::string dir = temp_dir("nav-vor");
+  // The pilot dials 115.80 and course 090 one second in (a step: a repeated time).
+  std::ofstream(dir + "/profile.csv") << "time_s,nav1_mhz,obs1_deg\n0,0,0\n1,0,0\n1,115.80,90\n";
+  std::ofstream(dir + "/vor.yaml") << R"(name: vor
+mode: lockstep
+rate_hz: 50
+timing: {args: [--frames, "7000"]}
+federates:
+  - {name: io, binary: fedsim-io, args: [--profile, "${DEPLOY_DIR}/profile.csv"]}
+  - name: flight
+    binary: fedsim-flight
+    args: [--aircraft, "${DATA_DIR}/aircraft/c172.yaml", --trim, level, --alt-ft, "3000",
+           --ktas, "110", --heading, "90", --lat, "37.62", --lon, "-122.44",
+           --controls, relative, --state-qos, lockstep_data]
+  - {name: nav, binary: fedsim-nav, args: [--state-qos, lockstep_data]}
+  - name: recorder
+    binary: fedsim
+    args: [record, --topics, "fedsim/navigation_state", --out, "${OUT_DIR}", --lockstep-member]
+)";
+  ChildProcess run({bin("fedsim"), "run", dir + "/vor.yaml", "--domain",
+                          std::to_string(domain), "--out", dir + "/out", "--quiet"},
+                         dir + "/run.log");
+  ASSERT_TRUE(run.wait(110)) << run.output();
+  ASSERT_EQ(run.exit_code(), 0) << run.output();
+
+  auto csv = csv::CsvReader::open(dir + "/out/fedsim_navigation_state.csv");
+  std::vector<int> flags;  // NAV1 TO/FROM of every valid VOR reading
+  std::vector<double> dme_m;
+  int untuned = 0, nav2_valid = 0;
+  csv::CsvRow row_storage;
+  while (csv.next(row_storage)) {
+    const csv::CsvRow* row = &row_storage;
+    if (row->number("sim_time_s") < 1.1) {
+      untuned += row->integer("nav[0].status") == 2;  // SIGNAL_NOT_TUNED before the pilot tunes
+      continue;
+    }
+    nav2_valid += row->integer("nav[1].status") == 0;
+    if (row->integer("nav[0].status") != 0) continue;
+    EXPECT_EQ(row->text("nav[0].ident"), "SFO");
+    flags.push_back(static_cast<int>(row->integer("nav[0].to_from")));
+    if (row->integer("nav[0].dme_status") == 0) dme_m.push_back(row->number("nav[0].dme_slant_range_m"));
+  }
+  EXPECT_GT(untuned, 40);
+  EXPECT_EQ(nav2_valid, 0);
+  ASSERT_GT(flags.size(), 6000u);
+  EXPECT_EQ(flags.front(), 1);  // TO
+  EXPECT_EQ(flags.back(), 2);   // FROM
+  const auto first_from = std::find(flags.begin(), flags.end(), 2);
+  EXPECT_TRUE(std::all_of(flags.begin(), first_from, [](int f) { return f != 2; }));
+  EXPECT_TRUE(std::all_of(first_from, flags.end(), [](int f) { return f == 2; }));
+  ASSERT_GT(dme_m.size(), 6000u);
+  const auto closest = std::min_element(dme_m.begin(), dme_m.end());
+  EXPECT_GT(dme_m.front(), *closest + 3000.0);
+  EXPECT_GT(dme_m.back(), *closest + 1000.0);
+  EXPECT_LT(*closest, 1200.0);  // overhead: about the height above the station (3000 ft)
+}
+
 
 }  // namespace
 }  // namespace fedsim::testing

@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "fedsim/command_cli.hpp"
+#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 
 #include "common/runtime/federate_options.hpp"
@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <thread>
 #include <memory>
@@ -27,6 +28,7 @@ struct CommandOptions {
   // reposition
   std::string airport, runway;
   double gate_nm = 0.0;
+  double nav1_mhz = 0, nav2_mhz = 0, obs1_deg = -1, obs2_deg = -1, adf_khz = 0;  // tune
   double lat_deg = 0, lon_deg = 0, alt_ft = 0, heading_deg = 0, kt = 0;
   bool has_point = false;
   // weather
@@ -213,11 +215,49 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     exit_code = send(*o, c);
   });
 
+  auto* tune = cmd->add_subcommand("tune", "tune the aircraft's radios (as the instructor)");
+  add_common_options(*tune, *o);
+  tune->add_option("--nav1", o->nav1_mhz, "NAV1 frequency [MHz], 108.00-117.95")
+      ->check(fedsim::util::FiniteRange(108.0, 117.95));
+  tune->add_option("--obs1", o->obs1_deg, "NAV1 course, magnetic [deg]")
+      ->check(fedsim::util::FiniteRange(0.0, 360.0));
+  tune->add_option("--nav2", o->nav2_mhz, "NAV2 frequency [MHz]")
+      ->check(fedsim::util::FiniteRange(108.0, 117.95));
+  tune->add_option("--obs2", o->obs2_deg, "NAV2 course, magnetic [deg]")
+      ->check(fedsim::util::FiniteRange(0.0, 360.0));
+  tune->add_option("--adf", o->adf_khz, "ADF frequency [kHz], 190-1750")
+      ->check(fedsim::util::FiniteRange(190.0, 1750.0));
+  tune->add_option("--target", o->target, "aircraft addressed");
+  tune->callback([o, &exit_code] {
+    if (o->nav1_mhz == 0 && o->nav2_mhz == 0 && o->adf_khz == 0) {
+      std::cerr << "fedsim command tune: give --nav1, --nav2 or --adf\n";
+      exit_code = 2;
+      return;
+    }
+    msg::SimCommand c;
+    c.kind(msg::COMMAND_RADIO_TUNING);
+    c.target(o->target);
+    auto& r = c.radios();
+    const auto channel_khz = [](double mhz) {  // the 50 kHz VHF NAV channel dialled
+      return static_cast<std::uint32_t>(std::lround(mhz * 20.0)) * 50u;
+    };
+    r.nav1_khz(o->nav1_mhz > 0 ? channel_khz(o->nav1_mhz) : 0);
+    r.nav2_khz(o->nav2_mhz > 0 ? channel_khz(o->nav2_mhz) : 0);
+    r.obs1_rad(static_cast<float>(std::max(0.0, o->obs1_deg) * units::kDegToRad));
+    r.obs2_rad(static_cast<float>(std::max(0.0, o->obs2_deg) * units::kDegToRad));
+    r.adf_khz(static_cast<std::uint32_t>(std::lround(o->adf_khz)));
+    exit_code = send(*o, c);
+  });
+
   for (const bool fail : {true, false}) {
     auto* f = cmd->add_subcommand(fail ? "fail" : "restore",
                                   fail ? "fail a system, e.g. engine1" : "restore a failed system");
     add_common_options(*f, *o);
-    f->add_option("system", o->target, "system: engine1..engine4")->required();
+    f->add_option("system", o->target,
+                  "system: engine1..engine4 (flight); nav1, nav2, adf, markers, ins, gps (denied), "
+                  "station:<IDENT>, station-dme:<IDENT>, station-gs:<IDENT>, "
+                  "station-markers:<IDENT> (navigation)")
+        ->required();
     f->callback([o, fail, &exit_code] {
       msg::SimCommand c;
       c.kind(msg::COMMAND_FAILURE);

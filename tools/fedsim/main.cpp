@@ -2,8 +2,8 @@
 // `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
 // `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics; `fedsim nav
 // find|near` looks up the navigation database.
-#include "common/util/cli_checks.hpp"
 #include "fedsim/command_cli.hpp"
+#include "common/util/cli_checks.hpp"
 #include "fedsim/graph.hpp"
 #include "fedsim/launcher.hpp"
 #include "fedsim/nav_cli.hpp"

@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "tools/topic/topic_commands.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "tools/topic/topic_tools.hpp"
 

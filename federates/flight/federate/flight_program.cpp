@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "flight/federate/flight_program.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "flight/model/aircraft/aircraft_pack.hpp"
 

@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "flight/federate/start_options.hpp"
+#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 
 #include "common/airports/runway_table.hpp"

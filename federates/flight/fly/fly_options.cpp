@@ -1,5 +1,5 @@
-#include "common/util/cli_checks.hpp"
 #include "flight/fly/fly_options.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include <cmath>
 #include <stdexcept>

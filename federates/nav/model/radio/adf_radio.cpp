@@ -29,6 +29,17 @@ AdfReading AdfRadio::receive(std::uint32_t frequency_khz, const AircraftPose& po
   for (const Navaid& navaid : source_->stations_on(frequency_khz).navaids) {
     if (!has_ndb(navaid)) continue;
     AdfReading candidate;
+    const double bound_m = ground_distance_lower_bound_m(navaid.position, pose.lat_rad, pose.lon_rad);
+    if (bound_m > kReceptionLimitM) {  // beyond any reception: flagged, no geometry computed
+      candidate.ident = navaid.ident;
+      candidate.status = SignalStatus::kOutOfServiceVolume;
+      if (!any || (!best.valid() && bound_m < best_distance_m)) {
+        best = candidate;
+        best_distance_m = bound_m;
+        any = true;
+      }
+      continue;
+    }
     if (outages_->off_air(navaid.ident)) {
       check_navaid(navaid);
       candidate.ident = navaid.ident;

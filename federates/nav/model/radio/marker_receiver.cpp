@@ -1,5 +1,7 @@
 #include "nav/model/radio/marker_receiver.hpp"
 
+#include "nav/model/radio/radio_geometry.hpp"
+
 #include "nav/model/radio/approach_geometry.hpp"
 
 #include <algorithm>
@@ -9,6 +11,11 @@
 namespace fedsim::nav {
 
 namespace {
+
+// The outer marker is at most about 7 NM (13 km) from the threshold (ICAO Annex 10 Vol I
+// 3.1.7.6.2: 7.2 km, +-0.8 km where practicable; some older sites up to 7 NM): beyond 30 km
+// from the threshold no beacon of that approach can be heard.
+constexpr double kMarkerSearchRadiusM = 30000.0;
 
 struct Candidate {
   MarkerBeacon beacon = MarkerBeacon::kNone;
@@ -77,6 +84,12 @@ MarkerReading MarkerReceiver::read(std::span<const IlsApproach> approaches,
   const IlsApproach* owner = nullptr;
   Candidate best;
   for (const IlsApproach& approach : approaches) {
+    // Markers lie on the approach within a few miles of the threshold: far approaches are
+    // skipped without their geometry.
+    if (ground_distance_lower_bound_m(approach.threshold, pose.lat_rad, pose.lon_rad) >
+        kMarkerSearchRadiusM) {
+      continue;
+    }
     const ApproachGeometry geometry = approach_geometry(approach);  // checks the record
     if (outages.off_air(approach.ident, StationComponent::kMarkers)) continue;
     const CourseCoordinates at =

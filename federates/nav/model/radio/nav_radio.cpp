@@ -30,11 +30,22 @@ struct Nearest {
 };
 
 template <class Reading>
-Reading off_air_reading(const std::string& ident) {
+Reading reading_with(const std::string& ident, SignalStatus status) {
   Reading reading;
   reading.ident = ident;
-  reading.status = SignalStatus::kStationOffAir;
+  reading.status = status;
   return reading;
+}
+
+template <class Reading>
+Reading off_air_reading(const std::string& ident) {
+  return reading_with<Reading>(ident, SignalStatus::kStationOffAir);
+}
+
+/// A station beyond any reception (radio_geometry.hpp): flagged without its geometry.
+template <class Reading>
+Reading far_reading(const std::string& ident) {
+  return reading_with<Reading>(ident, SignalStatus::kOutOfServiceVolume);
 }
 
 void set_every_status(NavReading& reading, SignalStatus status) {
@@ -102,6 +113,11 @@ void NavRadio::receive_course(const StationsOnFrequency& stations, const NavTuni
   Nearest<VorReading> vor;
   for (const Navaid& navaid : stations.navaids) {
     if (!has_vor(navaid)) continue;
+    const double bound_m = ground_distance_lower_bound_m(navaid.position, pose.lat_rad, pose.lon_rad);
+    if (bound_m > kReceptionLimitM) {
+      vor.offer(far_reading<VorReading>(navaid.ident), bound_m);
+      continue;
+    }
     const double distance_m = ground_distance_m(navaid.position, pose.lat_rad, pose.lon_rad);
     if (outages_->off_air(navaid.ident)) {
       check_navaid(navaid);
@@ -113,6 +129,14 @@ void NavRadio::receive_course(const StationsOnFrequency& stations, const NavTuni
   Nearest<LocalizerReading> localizer;
   const IlsApproach* localizer_approach = nullptr;
   for (const IlsApproach& approach : stations.approaches) {
+    const double bound_m =
+        ground_distance_lower_bound_m(approach.localizer, pose.lat_rad, pose.lon_rad);
+    if (bound_m > kReceptionLimitM) {
+      if (localizer.offer(far_reading<LocalizerReading>(approach.ident), bound_m)) {
+        localizer_approach = &approach;
+      }
+      continue;
+    }
     const double distance_m =
         ground_distance_m(approach.localizer, pose.lat_rad, pose.lon_rad);
     LocalizerReading candidate;
@@ -159,6 +183,12 @@ DmeReading NavRadio::receive_dme(const StationsOnFrequency& stations,
   Nearest<DmeReading> nearest;
   const auto offer = [&](const std::optional<DmeStation>& station) {
     if (!station) return;
+    const double bound_m =
+        ground_distance_lower_bound_m(station->antenna, pose.lat_rad, pose.lon_rad);
+    if (bound_m > kReceptionLimitM) {
+      nearest.offer(far_reading<DmeReading>(station->ident), bound_m);
+      return;
+    }
     const double distance_m =
         ground_distance_m(station->antenna, pose.lat_rad, pose.lon_rad);
     if (outages_->off_air(station->ident, StationComponent::kDme)) {

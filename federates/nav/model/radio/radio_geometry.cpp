@@ -45,6 +45,16 @@ double ground_distance_m(const GeoPoint& station, double lat_rad, double lon_rad
   return s12_m;
 }
 
+double ground_distance_lower_bound_m(const GeoPoint& station, double lat_rad, double lon_rad) {
+  constexpr double kMinRadiusOfCurvatureM = wgs84::kSemiMajorAxisM * (1.0 - wgs84::kEccentricitySquared);
+  const double dlat = lat_rad - station.lat_rad;
+  const double dlon = lon_rad - station.lon_rad;
+  const double h = std::sin(0.5 * dlat) * std::sin(0.5 * dlat) +
+                   std::cos(lat_rad) * std::cos(station.lat_rad) * std::sin(0.5 * dlon) *
+                       std::sin(0.5 * dlon);  // haversine
+  return 0.995 * kMinRadiusOfCurvatureM * 2.0 * std::asin(std::sqrt(std::min(1.0, h)));
+}
+
 double effective_earth_radius_m() {
   const double mean_radius_m = (2.0 * wgs84::kSemiMajorAxisM + wgs84::kSemiMinorAxisM) / 3.0;
   return kEffectiveEarthFactor * mean_radius_m;
