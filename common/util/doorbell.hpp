@@ -27,8 +27,8 @@ class Doorbell {
   std::uint32_t value() const { return rings_.load(std::memory_order_acquire); }
 
   void ring() {
-    rings_.fetch_add(1, std::memory_order_acq_rel);
-    if (waiters_.load(std::memory_order_acquire) > 0) {
+    rings_.fetch_add(1);  // seq_cst: ordered against the waiter's count (Dekker)
+    if (waiters_.load() > 0) {
       syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&rings_), FUTEX_WAKE_PRIVATE, 1,
               nullptr, nullptr, 0);
     }
@@ -36,14 +36,14 @@ class Doorbell {
 
   /// Returns when the bell rang since `seen` was read, or after `timeout` (or spuriously).
   void wait(std::uint32_t seen, std::chrono::nanoseconds timeout) {
-    waiters_.fetch_add(1, std::memory_order_acq_rel);
-    if (rings_.load(std::memory_order_acquire) == seen) {
+    waiters_.fetch_add(1);
+    if (rings_.load() == seen) {
       timespec ts{static_cast<time_t>(timeout.count() / 1000000000),
                   static_cast<long>(timeout.count() % 1000000000)};
       syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&rings_), FUTEX_WAIT_PRIVATE, seen,
               &ts, nullptr, 0);
     }
-    waiters_.fetch_sub(1, std::memory_order_acq_rel);
+    waiters_.fetch_sub(1);
   }
 
  private:
