@@ -1,4 +1,4 @@
-// One row of data/nav/ils.csv (the project's agreed ILS format: published units, columns in
+// One row of data/nav/ils.csv (the ILS format of data/nav/ILS.md: published units, columns in
 // ils_columns(), docs/navdb.md) -> an IlsApproach (SI), its threshold taken from the runway end
 // it serves.
 //
