@@ -1,19 +1,8 @@
 #include "common/control/first_order_lag.hpp"
 
-#include "common/control/first_order_discretisation.hpp"
-
 namespace fedsim::control {
-namespace {
-
-constexpr const char* kBlock = "FirstOrderLag";
-
-}  // namespace
 
 FirstOrderLag::FirstOrderLag(double time_constant_s, double dt_s, double gain)
-    : LinearBlock<1>(kBlock, discretise_first_order(kBlock, {{"time_constant_s", time_constant_s}},
-                                                    dt_s, gain, {{gain, 0.0}, {1.0, time_constant_s}},
-                                                    1.0 / time_constant_s)),
-      time_constant_s_(time_constant_s),
-      gain_(gain) {}
+    : FirstOrderBlock("FirstOrderLag", time_constant_s, dt_s, gain, {gain, 0.0}) {}
 
 }  // namespace fedsim::control

@@ -7,27 +7,21 @@
 // exactly K. For tau >> dt_s, c -> 2/dt_s (plain Tustin) to within (dt/tau)^2/12.
 //
 // step(u), output(), reset_to_input(u) (steady under the held input u, output K u) and
-// coefficients() come from LinearBlock (linear_block.hpp).
+// coefficients() come from LinearBlock (linear_block.hpp), time_constant_s() and gain() from
+// FirstOrderBlock (first_order_block.hpp).
 #pragma once
 
-#include "common/control/linear_block.hpp"
+#include "common/control/first_order_block.hpp"
 
 namespace fedsim::control {
 
-class FirstOrderLag : public LinearBlock<1> {
+class FirstOrderLag : public FirstOrderBlock {
  public:
   /// time_constant_s: tau > dt_s/pi (corner below Nyquist); dt_s > 0; gain: K finite, non-zero.
   FirstOrderLag(double time_constant_s, double dt_s, double gain = 1.0);
 
   /// Steady state at output y (the held input y/K): no transient follows.
-  using LinearBlock<1>::reset;
-
-  double time_constant_s() const { return time_constant_s_; }
-  double gain() const { return gain_; }
-
- private:
-  double time_constant_s_;
-  double gain_;
+  using FirstOrderBlock::reset;
 };
 
 }  // namespace fedsim::control

@@ -8,24 +8,17 @@
 // to a held input instead (reset_to_input), after which its output is 0 and stays 0.
 //
 // step(u), output(), reset_to_input(u) and coefficients() come from LinearBlock
-// (linear_block.hpp).
+// (linear_block.hpp), time_constant_s() and gain() from FirstOrderBlock (first_order_block.hpp).
 #pragma once
 
-#include "common/control/linear_block.hpp"
+#include "common/control/first_order_block.hpp"
 
 namespace fedsim::control {
 
-class Washout : public LinearBlock<1> {
+class Washout : public FirstOrderBlock {
  public:
   /// time_constant_s: tau > dt_s/pi (corner below Nyquist); dt_s > 0; gain K finite, non-zero.
   Washout(double time_constant_s, double dt_s, double gain = 1.0);
-
-  double time_constant_s() const { return time_constant_s_; }
-  double gain() const { return gain_; }
-
- private:
-  double time_constant_s_;
-  double gain_;
 };
 
 }  // namespace fedsim::control
