@@ -14,12 +14,7 @@ constexpr const char* kBlock = "Fader";
 int checked_fade_steps(double fade_time_s, double dt_s) {
   require_positive(kBlock, "fade_time_s", fade_time_s);
   require_sample_period(kBlock, dt_s);
-  if (fade_time_s < dt_s) {
-    std::ostringstream message;
-    message.precision(9);
-    message << kBlock << ": fade_time_s = " << fade_time_s << " must be at least dt_s = " << dt_s;
-    throw std::invalid_argument(message.str());
-  }
+  require_at_least_sample_period(kBlock, "fade_time_s", fade_time_s, dt_s);
   if (fade_time_s / dt_s > 1e9) {
     std::ostringstream message;
     message.precision(9);

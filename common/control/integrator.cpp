@@ -1,8 +1,6 @@
 #include "common/control/integrator.hpp"
 
 #include <algorithm>
-#include <sstream>
-#include <stdexcept>
 
 #include "common/control/bilinear.hpp"
 #include "common/control/parameter_checks.hpp"
@@ -56,13 +54,7 @@ void Integrator::hold() {
 void Integrator::reset(double y, double previous_input) {
   require_finite("Integrator::reset", "output", y);
   require_finite("Integrator::reset", "previous_input", previous_input);
-  if (y < lower_limit_ || y > upper_limit_) {
-    std::ostringstream message;
-    message.precision(9);
-    message << "Integrator::reset: output = " << y << " lies outside the limits [" << lower_limit_
-            << ", " << upper_limit_ << "]";
-    throw std::invalid_argument(message.str());
-  }
+  require_within_limits("Integrator::reset", "output", y, lower_limit_, upper_limit_);
   output_ = y;
   previous_input_ = previous_input;
   limited_ = false;

@@ -1,8 +1,6 @@
 #include "common/control/limiter.hpp"
 
 #include <algorithm>
-#include <sstream>
-#include <stdexcept>
 
 #include "common/control/parameter_checks.hpp"
 
@@ -23,13 +21,7 @@ double Limiter::step(double u) {
 
 void Limiter::reset(double y) {
   require_finite("Limiter::reset", "output", y);
-  if (y < lower_limit_ || y > upper_limit_) {
-    std::ostringstream message;
-    message.precision(9);
-    message << "Limiter::reset: output = " << y << " lies outside the limits [" << lower_limit_
-            << ", " << upper_limit_ << "]";
-    throw std::invalid_argument(message.str());
-  }
+  require_within_limits("Limiter::reset", "output", y, lower_limit_, upper_limit_);
   output_ = y;
   limited_ = false;
 }

@@ -66,6 +66,46 @@ void require_below_nyquist(std::string_view block, std::string_view what, double
   }
 }
 
+void require_at_least_sample_period(std::string_view block, std::string_view parameter,
+                                    double value, double dt_s) {
+  if (value < dt_s) {
+    std::ostringstream problem;
+    problem.precision(9);
+    problem << "must be at least dt_s = " << dt_s;
+    fail(block, parameter, value, problem.str());
+  }
+}
+
+void require_positive_at_most(std::string_view block, std::string_view parameter, double value,
+                              double upper) {
+  require_positive(block, parameter, value);
+  if (value > upper) {
+    std::ostringstream problem;
+    problem.precision(9);
+    problem << "must be at most " << upper;
+    fail(block, parameter, value, problem.str());
+  }
+}
+
+void require_within_limits(std::string_view block, std::string_view parameter, double value,
+                           double lower, double upper) {
+  if (value < lower || value > upper) {
+    std::ostringstream problem;
+    problem.precision(9);
+    problem << "lies outside the limits [" << lower << ", " << upper << "]";
+    fail(block, parameter, value, problem.str());
+  }
+}
+
+void require_finite_argument(std::string_view block, std::string_view method,
+                             std::string_view parameter, double value) {
+  if (!std::isfinite(value)) [[unlikely]] {
+    std::string where(block);
+    where.append("::").append(method);
+    fail(where, parameter, value, "must be finite");
+  }
+}
+
 void throw_non_finite_input(std::string_view block, double input) {
   fail(block, "input", input, "must be finite");
 }

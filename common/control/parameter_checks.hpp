@@ -27,6 +27,20 @@ void require_limits(std::string_view block, std::string_view lower_name, double 
 /// transform can place it (its pre-warped map c*tan(w dt/2) is finite only below pi/dt_s).
 void require_below_nyquist(std::string_view block, std::string_view what, double frequency_radps,
                            double dt_s);
+/// value (a duration [s]) must be at least the sample period dt_s: "must be at least dt_s = ...".
+void require_at_least_sample_period(std::string_view block, std::string_view parameter,
+                                    double value, double dt_s);
+/// value must be finite, > 0 and <= upper.
+void require_positive_at_most(std::string_view block, std::string_view parameter, double value,
+                              double upper);
+/// A value a block is reset to must lie within its limits [lower, upper] ("lies outside the
+/// limits [lower, upper]"); NaN is not caught here (require_finite first).
+void require_within_limits(std::string_view block, std::string_view parameter, double value,
+                           double lower, double upper);
+/// The argument of a block's method (reset, reset_to_input) must be finite; the message names
+/// "<block>::<method>" (built only when the check fails).
+void require_finite_argument(std::string_view block, std::string_view method,
+                             std::string_view parameter, double value);
 
 /// Thrown by require_finite_input; out of line so that the check in step() stays one branch.
 [[noreturn]] void throw_non_finite_input(std::string_view block, double input);

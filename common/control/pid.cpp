@@ -28,13 +28,8 @@ void check(const PidParameters& p, double dt_s) {
   require_limits(kBlock, "output_min", p.output_min, "output_max", p.output_max);
   if (p.anti_windup == AntiWindup::kBackCalculation) {
     require_positive(kBlock, "tracking_time_constant_s", p.tracking_time_constant_s);
-    if (p.tracking_time_constant_s < dt_s) {
-      std::ostringstream message;
-      message.precision(9);
-      message << kBlock << ": tracking_time_constant_s = " << p.tracking_time_constant_s
-              << " must be at least dt_s = " << dt_s;
-      throw std::invalid_argument(message.str());
-    }
+    require_at_least_sample_period(kBlock, "tracking_time_constant_s", p.tracking_time_constant_s,
+                                   dt_s);
   }
 }
 

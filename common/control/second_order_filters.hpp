@@ -1,5 +1,6 @@
 // Second-order filters on the denominator  s^2 + 2 zeta wn s + wn^2  (natural frequency wn
-// [rad/s], damping ratio zeta [-]), four small siblings that share one discretisation:
+// [rad/s], damping ratio zeta [-]), four siblings of one class template that differ only in the
+// numerator:
 //   SecondOrderLowPass   wn^2 / (...)            DC gain 1 (sensor and actuator dynamics, stick
 //                                                 and control-loading models)
 //   SecondOrderHighPass  s^2 / (...)             DC gain 0 (translational motion-cueing washout)
@@ -13,90 +14,63 @@
 // band-pass's unit peak), whatever wn is against Nyquist; at any w it is H(j c tan(w dt/2)),
 // c = wn / tan(wn dt/2). Stable for zeta > 0; zeta = 0 (low- and high-pass only) gives poles on
 // the unit circle at wn exactly (an undamped oscillator).
+//
+// step(u), output(), reset_to_input(u) and coefficients() come from LinearBlock
+// (linear_block.hpp); reset(y) exists for the low-pass and the notch (DC gain 1) only, the
+// frequency is natural_frequency_radps() for the low- and high-pass, centre_frequency_radps()
+// for the band-pass and the notch.
 #pragma once
 
-#include "common/control/linear_section.hpp"
+#include "common/control/linear_block.hpp"
 
 namespace fedsim::control {
 
-class SecondOrderLowPass : private LinearSection<2> {
- public:
-  /// natural_frequency_radps: 0 < wn < pi/dt_s; damping_ratio: zeta >= 0; dt_s > 0.
-  SecondOrderLowPass(double natural_frequency_radps, double damping_ratio, double dt_s);
+enum class SecondOrderShape { kLowPass, kHighPass, kBandPass, kNotch };
 
-  double step(double u);
-  using LinearSection<2>::output;
+template <SecondOrderShape S>
+class SecondOrderFilter : public LinearBlock<2> {
+  // The band-pass and notch are set by a centre and a width (zeta > 0); the others by wn.
+  static constexpr bool kBand = S == SecondOrderShape::kBandPass || S == SecondOrderShape::kNotch;
+  static constexpr bool kUnitDcGain = S == SecondOrderShape::kLowPass || S == SecondOrderShape::kNotch;
+
+ public:
+  /// frequency_radps: wn (the natural frequency, or the band-pass's and notch's centre),
+  /// 0 < wn < pi/dt_s; damping_ratio: zeta >= 0 (> 0 for the band-pass and notch, whose -3 dB
+  /// width is 2 zeta wn); dt_s > 0.
+  SecondOrderFilter(double frequency_radps, double damping_ratio, double dt_s);
+
   /// Steady state at output y (held input y).
-  void reset(double y);
-  void reset_to_input(double u);
+  void reset(double y)
+    requires kUnitDcGain
+  {
+    LinearBlock<2>::reset(y);
+  }
 
-  double natural_frequency_radps() const { return natural_frequency_radps_; }
+  double natural_frequency_radps() const
+    requires(!kBand)
+  {
+    return frequency_radps_;
+  }
+  double centre_frequency_radps() const
+    requires kBand
+  {
+    return frequency_radps_;
+  }
   double damping_ratio() const { return damping_ratio_; }
-  using LinearSection<2>::coefficients;
 
  private:
-  double natural_frequency_radps_;
+  double frequency_radps_;
   double damping_ratio_;
 };
 
-class SecondOrderHighPass : private LinearSection<2> {
- public:
-  /// natural_frequency_radps: 0 < wn < pi/dt_s; damping_ratio: zeta >= 0; dt_s > 0.
-  SecondOrderHighPass(double natural_frequency_radps, double damping_ratio, double dt_s);
+using SecondOrderLowPass = SecondOrderFilter<SecondOrderShape::kLowPass>;
+using SecondOrderHighPass = SecondOrderFilter<SecondOrderShape::kHighPass>;
+using BandPass = SecondOrderFilter<SecondOrderShape::kBandPass>;
+using Notch = SecondOrderFilter<SecondOrderShape::kNotch>;
 
-  double step(double u);
-  using LinearSection<2>::output;
-  /// Steady state under the held input u: output 0 (a high-pass has no other steady state).
-  void reset_to_input(double u);
-
-  double natural_frequency_radps() const { return natural_frequency_radps_; }
-  double damping_ratio() const { return damping_ratio_; }
-  using LinearSection<2>::coefficients;
-
- private:
-  double natural_frequency_radps_;
-  double damping_ratio_;
-};
-
-class BandPass : private LinearSection<2> {
- public:
-  /// centre_frequency_radps: 0 < wn < pi/dt_s; damping_ratio: zeta > 0 (the -3 dB width is
-  /// 2 zeta wn); dt_s > 0.
-  BandPass(double centre_frequency_radps, double damping_ratio, double dt_s);
-
-  double step(double u);
-  using LinearSection<2>::output;
-  /// Steady state under the held input u: output 0.
-  void reset_to_input(double u);
-
-  double centre_frequency_radps() const { return centre_frequency_radps_; }
-  double damping_ratio() const { return damping_ratio_; }
-  using LinearSection<2>::coefficients;
-
- private:
-  double centre_frequency_radps_;
-  double damping_ratio_;
-};
-
-class Notch : private LinearSection<2> {
- public:
-  /// centre_frequency_radps: 0 < wn < pi/dt_s; damping_ratio: zeta > 0 (the -3 dB width is
-  /// 2 zeta wn); dt_s > 0.
-  Notch(double centre_frequency_radps, double damping_ratio, double dt_s);
-
-  double step(double u);
-  using LinearSection<2>::output;
-  /// Steady state at output y (held input y).
-  void reset(double y);
-  void reset_to_input(double u);
-
-  double centre_frequency_radps() const { return centre_frequency_radps_; }
-  double damping_ratio() const { return damping_ratio_; }
-  using LinearSection<2>::coefficients;
-
- private:
-  double centre_frequency_radps_;
-  double damping_ratio_;
-};
+extern template class SecondOrderFilter<SecondOrderShape::kLowPass>;
+extern template class SecondOrderFilter<SecondOrderShape::kHighPass>;
+extern template class SecondOrderFilter<SecondOrderShape::kBandPass>;
+extern template class SecondOrderFilter<SecondOrderShape::kNotch>;
 
 }  // namespace fedsim::control

@@ -1,37 +1,8 @@
 #include "common/control/washout.hpp"
 
-#include "common/control/parameter_checks.hpp"
-
 namespace fedsim::control {
-namespace {
-
-constexpr const char* kBlock = "Washout";
-
-DiscreteTransferFunction<1> discretise(double time_constant_s, double dt_s, double gain) {
-  require_positive(kBlock, "time_constant_s", time_constant_s);
-  require_sample_period(kBlock, dt_s);
-  require_non_zero(kBlock, "gain", gain);
-  const double corner_radps = 1.0 / time_constant_s;
-  require_below_nyquist(kBlock, "corner 1/time_constant_s", corner_radps, dt_s);
-  const ContinuousTransferFunction<1> h{{0.0, gain * time_constant_s}, {1.0, time_constant_s}};
-  return bilinear(h, prewarped_tustin_constant_per_s(dt_s, corner_radps));
-}
-
-}  // namespace
 
 Washout::Washout(double time_constant_s, double dt_s, double gain)
-    : LinearSection<1>(discretise(time_constant_s, dt_s, gain)),
-      time_constant_s_(time_constant_s),
-      gain_(gain) {}
-
-double Washout::step(double u) {
-  require_finite_input(kBlock, u);
-  return LinearSection<1>::step(u);
-}
-
-void Washout::reset_to_input(double u) {
-  require_finite("Washout::reset_to_input", "input", u);
-  LinearSection<1>::reset_to_input(u);
-}
+    : FirstOrderBlock("Washout", time_constant_s, dt_s, gain, {0.0, gain * time_constant_s}) {}
 
 }  // namespace fedsim::control

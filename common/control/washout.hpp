@@ -6,29 +6,19 @@
 // and phase +45 degrees there; H(j c tan(w dt/2)) at any w, c = (1/tau)/tan(dt/(2 tau))).
 // The DC gain is exactly 0, so the block has no steady state at a non-zero output: it is reset
 // to a held input instead (reset_to_input), after which its output is 0 and stays 0.
+//
+// step(u), output(), reset_to_input(u) and coefficients() come from LinearBlock
+// (linear_block.hpp), time_constant_s() and gain() from FirstOrderBlock (first_order_block.hpp).
 #pragma once
 
-#include "common/control/linear_section.hpp"
+#include "common/control/first_order_block.hpp"
 
 namespace fedsim::control {
 
-class Washout : private LinearSection<1> {
+class Washout : public FirstOrderBlock {
  public:
   /// time_constant_s: tau > dt_s/pi (corner below Nyquist); dt_s > 0; gain K finite, non-zero.
   Washout(double time_constant_s, double dt_s, double gain = 1.0);
-
-  double step(double u);
-  using LinearSection<1>::output;
-  /// Steady state under the held input u: output 0, no transient while u is held.
-  void reset_to_input(double u);
-
-  double time_constant_s() const { return time_constant_s_; }
-  double gain() const { return gain_; }
-  using LinearSection<1>::coefficients;
-
- private:
-  double time_constant_s_;
-  double gain_;
 };
 
 }  // namespace fedsim::control

@@ -20,12 +20,6 @@ constexpr double kMaxTrueVsMagneticDeg = 3.0;
 constexpr double kMaxCourseVsRunwayDeg = 10.0;
 constexpr double kMaxLocalizerDistanceM = 8000.0;
 constexpr double kMaxGlideSlopeDistanceM = 2000.0;
-constexpr double kMinElevationFt = -1500.0;
-constexpr double kMaxElevationFt = 30000.0;
-
-double angle_difference_deg(double a_deg, double b_deg) {
-  return std::abs(std::remainder(a_deg - b_deg, 360.0));
-}
 
 std::uint32_t localizer_khz(const csv::CsvRow& row) {
   const double mhz = required_number_in(row, "frequency_mhz", kLocalizerLowMhz, kLocalizerHighMhz);
@@ -53,8 +47,7 @@ GeoPoint antenna(const csv::CsvRow& row, const std::string& name, const RunwayEn
              number_text(std::round(distance_m)) + " m from the threshold of " + end.airport + " " +
              end.runway + " (at most " + number_text(max_distance_m) + " m)");
   }
-  return GeoPoint{lat_deg * units::kDegToRad, lon_deg * units::kDegToRad,
-                  elevation_ft * units::kFtToM};
+  return point_from_degrees(lat_deg, lon_deg, elevation_ft * units::kFtToM);
 }
 
 std::optional<double> marker_m(const csv::CsvRow& row, const std::string& column, double max,

@@ -18,10 +18,6 @@ constexpr std::uint32_t kVhfStepKhz = 50;
 constexpr std::uint32_t kIlsBandTopKhz = 112000;  // below: VOR on even tenths, ILS on odd
 constexpr double kNdbLowKhz = 190.0;
 constexpr double kNdbHighKhz = 1750.0;
-// Plausible station heights (the Dead Sea shore is 1,400 ft below MSL; the highest stations
-// are near 14,000 ft).
-constexpr double kMinElevationFt = -1500.0;
-constexpr double kMaxElevationFt = 30000.0;
 
 std::string khz_text(std::uint32_t khz) { return std::to_string(khz) + " kHz"; }
 
@@ -34,10 +30,6 @@ void check_vor_frequency(const csv::CsvRow& row, std::uint32_t khz) {
     row.fail("column 'frequency_khz': " + khz_text(khz) +
              " is an ILS localizer frequency (odd tenth of MHz below 112 MHz), not a VOR's");
   }
-}
-
-GeoPoint point_from_degrees(double lat_deg, double lon_deg, double elevation_m) {
-  return GeoPoint{lat_deg * units::kDegToRad, lon_deg * units::kDegToRad, elevation_m};
 }
 
 /// The DME channel of a station with DME: as given, else derived from the paired frequency.

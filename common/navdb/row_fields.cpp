@@ -1,6 +1,7 @@
 #include "common/navdb/row_fields.hpp"
 
 #include "common/navdb/nav_types.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -58,6 +59,14 @@ std::uint32_t whole_khz(const csv::CsvRow& row, const std::string& column, doubl
   if (khz != std::floor(khz)) row.fail("column '" + column + "': " + row.text(column) +
                                        " is not a whole number of kHz");
   return static_cast<std::uint32_t>(khz);
+}
+
+GeoPoint point_from_degrees(double lat_deg, double lon_deg, double elevation_m) {
+  return GeoPoint{lat_deg * units::kDegToRad, lon_deg * units::kDegToRad, elevation_m};
+}
+
+double angle_difference_deg(double a_deg, double b_deg) {
+  return std::abs(std::remainder(a_deg - b_deg, 360.0));
 }
 
 }  // namespace fedsim::nav

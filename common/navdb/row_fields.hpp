@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/csv/csv_reader.hpp"
+#include "common/navdb/nav_records.hpp"
 
 #include <optional>
 #include <string>
@@ -27,5 +28,15 @@ std::uint32_t whole_khz(const csv::CsvRow& row, const std::string& column, doubl
                         double max_khz);
 /// Formats a number for messages without trailing zeros ("108.1", "3").
 std::string number_text(double value);
+
+/// Plausible heights above MSL [ft] of a station, an antenna or a runway end (the Dead Sea shore
+/// is 1,400 ft below MSL; the highest stations are near 14,000 ft).
+inline constexpr double kMinElevationFt = -1500.0;
+inline constexpr double kMaxElevationFt = 30000.0;
+
+/// A position as the files publish it (latitude, longitude [deg]) with its elevation [m], in SI.
+GeoPoint point_from_degrees(double lat_deg, double lon_deg, double elevation_m);
+/// |a - b| of two directions [deg], wrapped into [0, 180].
+double angle_difference_deg(double a_deg, double b_deg);
 
 }  // namespace fedsim::nav

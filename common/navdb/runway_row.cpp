@@ -13,13 +13,17 @@ namespace fedsim::nav {
 
 namespace {
 
-constexpr double kMinElevationFt = -1500.0;
-constexpr double kMaxElevationFt = 30000.0;
 constexpr double kMaxLengthFt = 50000.0;             // longest runways are ~18,000 ft
 constexpr double kMaxWidthFt = 10000.0;          // water lanes reach 7,000 ft
 constexpr double kHeadingWarningDeg = 5.0;           // published heading vs the ends' azimuth
 constexpr double kDesignatorToleranceDeg = 90.0;     // magnetic designator vs true azimuth
 constexpr double kMinEndSeparationM = 1.0;
+
+/// The column prefixes of the two ends (OurAirports' low and high end) and the columns each end
+/// has after its prefix.
+constexpr const char* kEndPrefixes[2] = {"le_", "he_"};
+constexpr const char* kEndColumns[] = {"ident",        "latitude_deg", "longitude_deg",
+                                       "elevation_ft", "heading_degT", "displaced_threshold_ft"};
 
 /// The published facts of one end ("le_" or "he_" columns).
 struct EndFields {
@@ -47,10 +51,6 @@ EndFields read_end(const csv::CsvRow& row, const std::string& prefix) {
   end.displaced_ft =
       optional_number_in(row, prefix + "displaced_threshold_ft", 0.0, kMaxLengthFt).value_or(0.0);
   return end;
-}
-
-double angle_difference_deg(double a_deg, double b_deg) {
-  return std::abs(std::remainder(a_deg - b_deg, 360.0));
 }
 
 /// The magnetic direction a designator states ("28R" -> 280), or nullopt ("H1", "N", "XX").
@@ -119,14 +119,13 @@ RunwayEndRecord make_end(const csv::CsvRow& row, const RowFacts& facts, const En
   }
   r.elevation_known = end.elevation_ft.has_value();
   const double elevation_m = end.elevation_ft.value_or(0.0) * units::kFtToM;
-  r.end = GeoPoint{*end.lat_deg * units::kDegToRad, *end.lon_deg * units::kDegToRad, elevation_m};
+  r.end = point_from_degrees(*end.lat_deg, *end.lon_deg, elevation_m);
   double threshold_lat_deg = *end.lat_deg, threshold_lon_deg = *end.lon_deg;
   if (displaced_m > 0.0) {
     geodesic.Direct(*end.lat_deg, *end.lon_deg, heading_deg, displaced_m, threshold_lat_deg,
                     threshold_lon_deg);
   }
-  r.threshold = GeoPoint{threshold_lat_deg * units::kDegToRad, threshold_lon_deg * units::kDegToRad,
-                         elevation_m};
+  r.threshold = point_from_degrees(threshold_lat_deg, threshold_lon_deg, elevation_m);
   r.heading_true_rad = heading_deg * units::kDegToRad;
   r.length_m = length_m;
   r.width_m = facts.width_ft * units::kFtToM;
@@ -140,11 +139,14 @@ RunwayEndRecord make_end(const csv::CsvRow& row, const RowFacts& facts, const En
 }  // namespace
 
 const std::vector<std::string>& runway_columns() {
-  static const std::vector<std::string> columns{
-      "id", "airport_ident", "length_ft", "width_ft", "surface", "lighted", "closed",
-      "le_ident", "le_latitude_deg", "le_longitude_deg", "le_elevation_ft", "le_heading_degT",
-      "le_displaced_threshold_ft", "he_ident", "he_latitude_deg", "he_longitude_deg",
-      "he_elevation_ft", "he_heading_degT", "he_displaced_threshold_ft"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names{"id",      "airport_ident", "length_ft", "width_ft",
+                                   "surface", "lighted",       "closed"};
+    for (const char* prefix : kEndPrefixes) {
+      for (const char* column : kEndColumns) names.push_back(std::string(prefix) + column);
+    }
+    return names;
+  }();
   return columns;
 }
 
@@ -159,7 +161,7 @@ RunwayRow parse_runway_row(const csv::CsvRow& row) {
   facts.closed = flag_01(row, "closed", false);
 
   RunwayRow out;
-  const std::string prefixes[2] = {"le_", "he_"};
+  const std::string prefixes[2] = {kEndPrefixes[0], kEndPrefixes[1]};
   std::optional<EndFields> fields[2];
   for (int i = 0; i < 2; ++i) {
     try {

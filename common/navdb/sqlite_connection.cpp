@@ -15,31 +15,32 @@ std::string open_message(sqlite3* db, int code) {
   return db ? sqlite3_errmsg(db) : sqlite3_errstr(code);
 }
 
+/// The handle of `path` opened with `flags`; throws std::runtime_error "<path>: <failure>:
+/// <SQLite's reason>" (the half-open handle closed) when SQLite refuses.
+sqlite3* open_or_throw(const std::string& path, int flags, const char* failure) {
+  sqlite3* db = nullptr;
+  const int code = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
+  if (code != SQLITE_OK) {
+    const std::string message = open_message(db, code);
+    sqlite3_close(db);
+    throw std::runtime_error(path + ": " + failure + ": " + message);
+  }
+  return db;
+}
+
 }  // namespace
 
 SqliteConnection SqliteConnection::open_read_only(const std::string& path) {
-  sqlite3* db = nullptr;
-  const int code = sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX,
-                                   nullptr);
-  if (code != SQLITE_OK) {
-    const std::string message = open_message(db, code);
-    sqlite3_close(db);
-    throw std::runtime_error(path + ": cannot open as SQLite: " + message);
-  }
-  return SqliteConnection(db, path);
+  return SqliteConnection(
+      open_or_throw(path, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX, "cannot open as SQLite"),
+      path);
 }
 
 SqliteConnection SqliteConnection::create(const std::string& path) {
-  sqlite3* db = nullptr;
-  const int code = sqlite3_open_v2(path.c_str(), &db,
-                                   SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
-                                   nullptr);
-  if (code != SQLITE_OK) {
-    const std::string message = open_message(db, code);
-    sqlite3_close(db);
-    throw std::runtime_error(path + ": cannot create: " + message);
-  }
-  return SqliteConnection(db, path);
+  return SqliteConnection(
+      open_or_throw(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                    "cannot create"),
+      path);
 }
 
 SqliteConnection::SqliteConnection(SqliteConnection&& other) noexcept

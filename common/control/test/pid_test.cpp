@@ -32,6 +32,15 @@ PidParameters pid_parameters(double kp, double ki, double kd, double tau_f) {
   return p;
 }
 
+// p with its output limited to [-limit, +limit] (limit = infinity: unlimited).
+PidParameters with_output_limit(PidParameters p, double limit) {
+  p.output_min = -limit;
+  p.output_max = limit;
+  return p;
+}
+
+constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+
 TEST(Pid, FrequencyResponseIsTheParallelFormUnderEachTermsMap) {
   // The integral uses the plain map (2/T) tan(w T/2), the derivative the map pre-warped at
   // 1/tau_f: exact (1e-8) under those maps, and within 2e-3 of H(jw) for w dt <= 0.1. (The
@@ -94,9 +103,7 @@ double overshoot_of_saturated_loop(const PidParameters& p, bool external_saturat
 }
 
 PidParameters saturated_pi(AntiWindup method) {
-  PidParameters p = pid_parameters(1.0, 0.5, 0.0, 0.0);
-  p.output_min = -1.0;
-  p.output_max = 1.0;
+  PidParameters p = with_output_limit(pid_parameters(1.0, 0.5, 0.0, 0.0), 1.0);
   p.anti_windup = method;
   p.tracking_time_constant_s = 1.0;
   return p;
@@ -108,9 +115,8 @@ TEST(Pid, AntiWindupKeepsTheSaturatedLoopFromOvershooting) {
   const double back_calculation =
       overshoot_of_saturated_loop(saturated_pi(AntiWindup::kBackCalculation), false);
   // Negative control: the same PI unlimited inside, the actuator saturating outside.
-  PidParameters unprotected = saturated_pi(AntiWindup::kConditionalIntegration);
-  unprotected.output_min = -std::numeric_limits<double>::infinity();
-  unprotected.output_max = std::numeric_limits<double>::infinity();
+  const PidParameters unprotected =
+      with_output_limit(saturated_pi(AntiWindup::kConditionalIntegration), kUnlimited);
   const double windup = overshoot_of_saturated_loop(unprotected, true);
   EXPECT_LT(conditional, 1.0);
   EXPECT_LT(back_calculation, 1.0);
@@ -122,18 +128,14 @@ TEST(Pid, AntiWindupKeepsTheSaturatedLoopFromOvershooting) {
 
 TEST(Pid, ConditionalIntegrationLeavesTheLimitAtOnceWhenTheErrorReverses) {
   const double dt = 0.01;
-  PidParameters p = pid_parameters(0.1, 1.0, 0.0, 0.0);
-  p.output_min = -1.0;
-  p.output_max = 1.0;
+  PidParameters p = with_output_limit(pid_parameters(0.1, 1.0, 0.0, 0.0), 1.0);
   Pid pid(p, dt);
   for (int n = 0; n < 1000; ++n) pid.step(5.0);  // 10 s: unprotected, I would reach 50
   EXPECT_EQ(pid.output(), 1.0);
   EXPECT_LE(pid.integral(), 1.0);
   EXPECT_LT(pid.step(-0.5), 1.0);  // the first step after the reversal
   // Negative control: unlimited inside, saturated outside, it stays at the limit for 40 s.
-  PidParameters unprotected = p;
-  unprotected.output_min = -std::numeric_limits<double>::infinity();
-  unprotected.output_max = std::numeric_limits<double>::infinity();
+  const PidParameters unprotected = with_output_limit(p, kUnlimited);
   Pid wound(unprotected, dt);
   Limiter saturation(-1.0, 1.0);
   for (int n = 0; n < 1000; ++n) saturation.step(wound.step(5.0));
@@ -142,9 +144,7 @@ TEST(Pid, ConditionalIntegrationLeavesTheLimitAtOnceWhenTheErrorReverses) {
 
 TEST(Pid, BackCalculationBleedsTheIntegralToTheLimitWithTheTrackingTimeConstant) {
   const double dt = 0.01, tracking_s = 0.5;
-  PidParameters p = pid_parameters(0.0, 1.0, 0.0, 0.0);
-  p.output_min = -1.0;
-  p.output_max = 1.0;
+  PidParameters p = with_output_limit(pid_parameters(0.0, 1.0, 0.0, 0.0), 1.0);
   p.anti_windup = AntiWindup::kBackCalculation;
   p.tracking_time_constant_s = tracking_s;
   Pid pid(p, dt);
@@ -156,9 +156,7 @@ TEST(Pid, BackCalculationBleedsTheIntegralToTheLimitWithTheTrackingTimeConstant)
 
 TEST(Pid, EngageIsBumpless) {
   const double dt = 0.01;
-  PidParameters p = pid_parameters(2.0, 0.5, 0.1, 0.05);
-  p.output_min = -10.0;
-  p.output_max = 10.0;
+  PidParameters p = with_output_limit(pid_parameters(2.0, 0.5, 0.1, 0.05), 10.0);
   Pid pid(p, dt);
   for (int n = 0; n < 200; ++n) pid.step(std::sin(0.05 * n));  // some history to overwrite
   const double error = 0.3, held_output = 4.0;
@@ -182,9 +180,7 @@ TEST(Pid, EngageIsBumpless) {
 }
 
 TEST(Pid, EngageOutsideTheLimitsIsRejected) {
-  PidParameters p = pid_parameters(1.0, 1.0, 0.0, 0.0);
-  p.output_min = -1.0;
-  p.output_max = 1.0;
+  PidParameters p = with_output_limit(pid_parameters(1.0, 1.0, 0.0, 0.0), 1.0);
   Pid pid(p, 0.01);
   EXPECT_THROW(pid.engage(0.0, 1.5), std::invalid_argument);
   EXPECT_THROW(pid.engage(std::nan(""), 0.5), std::invalid_argument);

@@ -34,6 +34,20 @@ bool mentions(const std::vector<std::string>& texts, const std::string& part) {
                      [&](const std::string& t) { return t.find(part) != std::string::npos; });
 }
 
+struct ExpectedProblem {
+  int line;
+  std::string part;  // a part of one of the line's error texts
+};
+
+/// Every listed line of `origin` has an error mentioning its part.
+void expect_problems(const BuildReport& report, const std::string& origin,
+                     const std::vector<ExpectedProblem>& expected) {
+  for (const ExpectedProblem& e : expected) {
+    EXPECT_TRUE(mentions(problems_on(report, origin, e.line), e.part))
+        << origin << ":" << e.line << " lacks '" << e.part << "'";
+  }
+}
+
 class FixtureBuild : public testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -48,16 +62,17 @@ BuildReport FixtureBuild::report_;
 
 TEST_F(FixtureBuild, ReportsEachBadNavaidRowByLine) {
   const std::string f = "navaids.csv";
-  EXPECT_TRUE(mentions(problems_on(report_, f, 4), "navaids.csv:4: column 'frequency_khz': empty"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 5), "column 'latitude_deg': 91.5 is outside"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 6), "unknown type 'LOC'"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 7), "column 'elevation_ft': not a number: 'abc'"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 8), "DME channel 106X pairs with 115900 kHz"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 9), "outside the NDB band"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 10), "ILS localizer frequency"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 11), "93531 already read on line 2"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 12), "18 fields, the header has 20"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 17), "column 'magnetic_variation_deg': empty"));
+  expect_problems(report_, f,
+                  {{4, "navaids.csv:4: column 'frequency_khz': empty"},
+                   {5, "column 'latitude_deg': 91.5 is outside"},
+                   {6, "unknown type 'LOC'"},
+                   {7, "column 'elevation_ft': not a number: 'abc'"},
+                   {8, "DME channel 106X pairs with 115900 kHz"},
+                   {9, "outside the NDB band"},
+                   {10, "ILS localizer frequency"},
+                   {11, "93531 already read on line 2"},
+                   {12, "18 fields, the header has 20"},
+                   {17, "column 'magnetic_variation_deg': empty"}});
   // The redundant dme_frequency_khz of line 15 disagrees with its channel: kept, with a warning.
   EXPECT_TRUE(mentions(problems_on(report_, f, 15, true), "dme_frequency_khz"));
   // Good rows carry no problem (negative control of the line matching).
@@ -69,14 +84,15 @@ TEST_F(FixtureBuild, ReportsEachBadNavaidRowByLine) {
 
 TEST_F(FixtureBuild, ReportsEachBadRunwayEndByLine) {
   const std::string f = "runways.csv";
-  EXPECT_TRUE(mentions(problems_on(report_, f, 6), "'le_longitude_deg': empty while the other"));
+  expect_problems(report_, f,
+                  {{6, "'le_longitude_deg': empty while the other"},
+                   {7, "same position"},
+                   {8, "column 'closed': '2' is not 0 or 1"},
+                   {9, "runway 09 but the ends' azimuth is 270"},
+                   {11, "'le_displaced_threshold_ft': 6000 ft"},
+                   {12, "KSFO 28R already read on line 2"}});
   EXPECT_EQ(problems_on(report_, f, 7).size(), 2u);  // both ends at one position
-  EXPECT_TRUE(mentions(problems_on(report_, f, 7), "same position"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 8), "column 'closed': '2' is not 0 or 1"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 9), "runway 09 but the ends' azimuth is 270"));
   EXPECT_TRUE(problems_on(report_, f, 10).empty());  // no position: counted, not an error
-  EXPECT_TRUE(mentions(problems_on(report_, f, 11), "'le_displaced_threshold_ft': 6000 ft"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 12), "KSFO 28R already read on line 2"));
   for (int good = 2; good <= 5; ++good) EXPECT_TRUE(problems_on(report_, f, good).empty());
   EXPECT_EQ(report_.runway_rows, 11u);
   EXPECT_EQ(report_.runway_ends, 10u);
@@ -87,12 +103,13 @@ TEST_F(FixtureBuild, ReportsEachBadRunwayEndByLine) {
 
 TEST_F(FixtureBuild, ReportsEachBadIlsRowByLine) {
   const std::string f = "ils.csv";
-  EXPECT_TRUE(mentions(problems_on(report_, f, 6), "110.20 MHz is not a localizer frequency"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 7), "no runway end KSFO 99"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 8), "'glide_path_angle_deg': 9.00 is outside"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 9), "from runway 10L's landing direction"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 10), "'course_lat_deg' is not a column"));
-  EXPECT_TRUE(mentions(problems_on(report_, f, 11), "a second ILS for KSFO 28R (first on line 4)"));
+  expect_problems(report_, f,
+                  {{6, "110.20 MHz is not a localizer frequency"},
+                   {7, "no runway end KSFO 99"},
+                   {8, "'glide_path_angle_deg': 9.00 is outside"},
+                   {9, "from runway 10L's landing direction"},
+                   {10, "'course_lat_deg' is not a column"},
+                   {11, "a second ILS for KSFO 28R (first on line 4)"}});
   EXPECT_TRUE(problems_on(report_, f, 4).empty());
   EXPECT_TRUE(problems_on(report_, f, 5).empty());
   EXPECT_EQ(report_.ils_rows, 8u);

@@ -31,6 +31,43 @@ class Checker {
   std::string_view axis_;
 };
 
+// Where the roll wheel and the pedals differ from the pitch column (the struct's defaults): the
+// control and its feel, one row per axis below.
+struct AxisFeel {
+  double mass_kg;
+  double travel_m;  // both ways (positive and negative travel) [m]
+  double breakout_force_n;
+  double coulomb_friction_n;
+  double viscous_damping_nspm;
+  double gradient_per_qbar_m;
+  double gradient_min_npm;
+  double gradient_max_npm;
+  double trim_travel_m;
+};
+
+// clang-format off
+//                           mass travel breakout coulomb  viscous gradient gradient gradient trim
+//                                       force    friction damping /qbar    min      max      travel
+//                           [kg] [m]    [N]      [N]      [N s/m] [m]      [N/m]    [N/m]    [m]
+constexpr AxisFeel kRollFeel{2.0, 0.12,  7.0,     3.0,     12.0,   0.15,    80.0,    2000.0,  0.03};
+constexpr AxisFeel kYawFeel{ 5.0, 0.10,  30.0,    12.0,    60.0,   0.8,     400.0,   8000.0,  0.04};
+// clang-format on
+
+ControlAxisParameters with_feel(const AxisFeel& feel) {
+  ControlAxisParameters p;
+  p.mass_kg = feel.mass_kg;
+  p.positive_travel_m = feel.travel_m;
+  p.negative_travel_m = feel.travel_m;
+  p.breakout_force_n = feel.breakout_force_n;
+  p.coulomb_friction_n = feel.coulomb_friction_n;
+  p.viscous_damping_nspm = feel.viscous_damping_nspm;
+  p.gradient_per_qbar_m = feel.gradient_per_qbar_m;
+  p.gradient_min_npm = feel.gradient_min_npm;
+  p.gradient_max_npm = feel.gradient_max_npm;
+  p.trim_travel_m = feel.trim_travel_m;
+  return p;
+}
+
 }  // namespace
 
 ControlAxisParameters default_pitch_axis() {
@@ -39,34 +76,11 @@ ControlAxisParameters default_pitch_axis() {
   return p;
 }
 
-ControlAxisParameters default_roll_axis() {
-  ControlAxisParameters p;
-  p.mass_kg = 2.0;
-  p.positive_travel_m = 0.12;
-  p.negative_travel_m = 0.12;
-  p.breakout_force_n = 7.0;
-  p.coulomb_friction_n = 3.0;
-  p.viscous_damping_nspm = 12.0;
-  p.gradient_per_qbar_m = 0.15;
-  p.gradient_min_npm = 80.0;
-  p.gradient_max_npm = 2000.0;
-  p.trim_travel_m = 0.03;
-  return p;
-}
+ControlAxisParameters default_roll_axis() { return with_feel(kRollFeel); }
 
 ControlAxisParameters default_yaw_axis() {
-  ControlAxisParameters p;
-  p.mass_kg = 5.0;
-  p.positive_travel_m = 0.10;
-  p.negative_travel_m = 0.10;
-  p.breakout_force_n = 30.0;
-  p.coulomb_friction_n = 12.0;
-  p.viscous_damping_nspm = 60.0;
-  p.gradient_per_qbar_m = 0.8;
-  p.gradient_min_npm = 400.0;
-  p.gradient_max_npm = 8000.0;
-  p.trim_travel_m = 0.04;
-  p.backdrive_force_limit_n = 250.0;
+  ControlAxisParameters p = with_feel(kYawFeel);
+  p.backdrive_force_limit_n = 250.0;  // heavier pedals need a stronger servo and loader
   p.motor_force_limit_n = 1200.0;
   return p;
 }

@@ -17,10 +17,7 @@ constexpr double kMaxFrequencyStepProduct = 0.2;  // wa h: accuracy, well inside
 
 void validate(const JackActuatorParameters& p) {
   control::require_positive(kBlock, "natural_frequency_radps", p.natural_frequency_radps);
-  control::require_positive(kBlock, "damping_ratio", p.damping_ratio);
-  if (p.damping_ratio > 5.0) {
-    throw std::invalid_argument("JackActuatorParameters: damping_ratio must be at most 5");
-  }
+  control::require_positive_at_most(kBlock, "damping_ratio", p.damping_ratio, 5.0);
   control::require_positive(kBlock, "velocity_limit_mps", p.velocity_limit_mps);
   control::require_positive(kBlock, "acceleration_limit_mps2", p.acceleration_limit_mps2);
   control::require_positive(kBlock, "cushion_deceleration_mps2", p.cushion_deceleration_mps2);

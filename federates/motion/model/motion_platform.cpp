@@ -55,10 +55,8 @@ void validate(const MotionPlatformParameters& p, double frame_dt_s) {
         "MotionPlatformParameters: engage and park speeds must not exceed the jack velocity "
         "limit");
   }
-  control::require_positive(kBlock, "command_speed_fraction", p.command_speed_fraction);
-  if (p.command_speed_fraction > 1.0) {
-    throw std::invalid_argument("MotionPlatformParameters: command_speed_fraction must be <= 1");
-  }
+  control::require_positive_at_most(kBlock, "command_speed_fraction", p.command_speed_fraction,
+                                    1.0);
   control::require_positive(kBlock, "following_error_limit_m", p.following_error_limit_m);
   control::require_positive(kBlock, "settled_tolerance_m", p.settled_tolerance_m);
   control::require_positive(kBlock, "settled_speed_mps", p.settled_speed_mps);

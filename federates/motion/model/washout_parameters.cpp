@@ -36,34 +36,35 @@ void require_frequency(const std::string& field, double value, double dt_s) {
   if (value == units::kPi / dt_s) fail(field, value, "must be below Nyquist pi/dt_s");
 }
 
-std::string indexed(const char* group, int i, const char* field) {
-  return std::string(group) + "[" + std::to_string(i) + "]." + field;
+// What every channel has, a gain K in [0, 1] and a second-order filter (wn below Nyquist, zeta
+// in (0, 5]), checked as "<channel>.gain", "<channel>.natural_frequency_radps", ...
+void require_channel(const std::string& channel, double gain, double natural_frequency_radps,
+                     double damping_ratio, double dt_s) {
+  constexpr double kMaxDamping = 5.0;
+  require_range(channel + ".gain", gain, 0.0, 1.0, false);
+  require_frequency(channel + ".natural_frequency_radps", natural_frequency_radps, dt_s);
+  require_range(channel + ".damping_ratio", damping_ratio, 0.0, kMaxDamping, true);
+}
+
+std::string indexed(const char* group, int i) {
+  return std::string(group) + "[" + std::to_string(i) + "]";
 }
 
 }  // namespace
 
 void validate(const ClassicalWashoutParameters& p, double dt_s) {
   control::require_sample_period(kBlock, dt_s);
-  constexpr double kMaxDamping = 5.0;
   for (int i = 0; i < 3; ++i) {
     const TranslationalChannelParameters& t = p.translational[i];
-    require_range(indexed("translational", i, "gain"), t.gain, 0.0, 1.0, false);
-    require_frequency(indexed("translational", i, "natural_frequency_radps"),
-                      t.natural_frequency_radps, dt_s);
-    require_range(indexed("translational", i, "damping_ratio"), t.damping_ratio, 0.0, kMaxDamping,
-                  true);
-    require_frequency(indexed("translational", i, "break_frequency_radps"), t.break_frequency_radps,
-                      dt_s);
+    const std::string translational = indexed("translational", i);
+    require_channel(translational, t.gain, t.natural_frequency_radps, t.damping_ratio, dt_s);
+    require_frequency(translational + ".break_frequency_radps", t.break_frequency_radps, dt_s);
     const RotationalChannelParameters& r = p.rotational[i];
-    require_range(indexed("rotational", i, "gain"), r.gain, 0.0, 1.0, false);
-    require_frequency(indexed("rotational", i, "natural_frequency_radps"),
-                      r.natural_frequency_radps, dt_s);
-    require_range(indexed("rotational", i, "damping_ratio"), r.damping_ratio, 0.0, kMaxDamping,
-                  true);
+    require_channel(indexed("rotational", i), r.gain, r.natural_frequency_radps, r.damping_ratio,
+                    dt_s);
   }
-  require_range("tilt.gain", p.tilt.gain, 0.0, 1.0, false);
-  require_frequency("tilt.natural_frequency_radps", p.tilt.natural_frequency_radps, dt_s);
-  require_range("tilt.damping_ratio", p.tilt.damping_ratio, 0.0, kMaxDamping, true);
+  const TiltCoordinationParameters& tilt = p.tilt;
+  require_channel("tilt", tilt.gain, tilt.natural_frequency_radps, tilt.damping_ratio, dt_s);
   require_range("tilt.rate_limit_radps", p.tilt.rate_limit_radps, 0.0, 20.0 * units::kDegToRad,
                 true);
   require_range("tilt.angle_limit_rad", p.tilt.angle_limit_rad, 0.0, 45.0 * units::kDegToRad, true);

@@ -1,6 +1,7 @@
 #include "nav/model/radio/adf_receiver.hpp"
 
 #include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/receiver_link.hpp"
 #include "nav/model/radio/service_volume.hpp"
 #include "nav/model/radio/station_checks.hpp"
 
@@ -13,19 +14,14 @@ AdfReading AdfReceiver::read(const Navaid& ndb, const AircraftPose& pose) const 
   if (!has_ndb(ndb)) {
     throw std::invalid_argument("AdfReceiver: navaid '" + ndb.ident + "' is not an NDB");
   }
-  AdfReading reading;
-  reading.ident = ndb.ident;
-  if (!pose_problem(pose).empty()) {
-    reading.status = SignalStatus::kInvalidInput;
-    return reading;
-  }
-  const LinkGeometry link =
-      link_geometry(ndb.position, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
+  const ReceiverLink path = receiver_link(ndb.position, pose);
+  AdfReading reading{.status = path.status, .ident = ndb.ident};
+  if (!reading.valid()) return reading;
+  const LinkGeometry& link = path.link;
   if (link.ground_distance_m > ndb_service_range_m(ndb_service_class(ndb))) {
     reading.status = SignalStatus::kOutOfServiceVolume;
     return reading;
   }
-  reading.status = SignalStatus::kValid;
   reading.bearing_to_station_true_rad = link.azimuth_to_station_true_rad;
   reading.relative_bearing_rad =
       wrap_two_pi(link.azimuth_to_station_true_rad - pose.heading_true_rad);

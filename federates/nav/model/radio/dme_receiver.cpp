@@ -2,6 +2,7 @@
 
 #include "common/units/units.hpp"
 #include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/receiver_link.hpp"
 #include "nav/model/radio/station_checks.hpp"
 
 #include <cmath>
@@ -42,19 +43,11 @@ std::optional<DmeStation> dme_station(const IlsApproach& approach) {
 
 DmeReading DmeReceiver::read(const DmeStation& station, const AircraftPose& pose) const {
   check_antenna(station);
-  DmeReading reading;
-  reading.ident = station.ident;
-  if (!pose_problem(pose).empty()) {
-    reading.status = SignalStatus::kInvalidInput;
-    return reading;
-  }
-  const LinkGeometry link =
-      link_geometry(station.antenna, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
-  reading.status = vhf_reception(station.service_class, link, station.antenna.elevation_m,
-                                 pose.altitude_msl_m);
-  if (reading.status != SignalStatus::kValid) return reading;
-  reading.slant_range_m = link.slant_range_m;
-  reading.ground_distance_m = link.ground_distance_m;
+  const ReceiverLink path = vhf_receiver_link(station.antenna, station.service_class, pose);
+  DmeReading reading{.status = path.status, .ident = station.ident};
+  if (!reading.valid()) return reading;
+  reading.slant_range_m = path.link.slant_range_m;
+  reading.ground_distance_m = path.link.ground_distance_m;
   return reading;
 }
 

@@ -3,6 +3,7 @@
 #include "common/units/units.hpp"
 #include "nav/model/radio/approach_geometry.hpp"
 #include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/receiver_link.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,22 +39,12 @@ SignalStatus coverage_status(const IlsApproach& approach, const ApproachGeometry
 
 GlideSlopeReading GlideSlopeReceiver::read(const IlsApproach& approach,
                                            const AircraftPose& pose) const {
-  const ApproachGeometry geometry = approach_geometry(approach);  // checks the record
-  GlideSlopeReading reading;
-  reading.ident = approach.ident;
-  if (!pose_problem(pose).empty()) {
-    reading.status = SignalStatus::kInvalidInput;
-    return reading;
-  }
-  const LinkGeometry link =
-      link_geometry(approach.glide_slope, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
-  if (!within_radio_line_of_sight(approach.glide_slope.elevation_m, pose.altitude_msl_m,
-                                  link.ground_distance_m)) {
-    reading.status = SignalStatus::kBelowRadioHorizon;
-    return reading;
-  }
-  reading.status = coverage_status(approach, geometry, link, pose.lat_rad, pose.lon_rad);
-  if (reading.status != SignalStatus::kValid) return reading;
+  const IlsReception reception = ils_reception(approach, approach.glide_slope, pose);
+  GlideSlopeReading reading{.status = reception.path.status, .ident = approach.ident};
+  if (!reading.valid()) return reading;
+  const LinkGeometry& link = reception.path.link;
+  reading.status = coverage_status(approach, reception.geometry, link, pose.lat_rad, pose.lon_rad);
+  if (!reading.valid()) return reading;
   const double theta = approach.glide_path_angle_rad;
   reading.elevation_angle_rad = link.elevation_angle_rad;
   reading.glide_path_angle_rad = theta;

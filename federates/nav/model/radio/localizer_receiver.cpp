@@ -3,6 +3,7 @@
 #include "common/units/units.hpp"
 #include "nav/model/radio/approach_geometry.hpp"
 #include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/receiver_link.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,24 +35,15 @@ SignalStatus coverage_status(const LinkGeometry& link, double angle_off_course_r
 
 LocalizerReading LocalizerReceiver::read(const IlsApproach& approach,
                                          const AircraftPose& pose) const {
-  const ApproachGeometry geometry = approach_geometry(approach);  // checks the record
-  LocalizerReading reading;
-  reading.ident = approach.ident;
-  if (!pose_problem(pose).empty()) {
-    reading.status = SignalStatus::kInvalidInput;
-    return reading;
-  }
-  const LinkGeometry link =
-      link_geometry(approach.localizer, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
+  const IlsReception reception = ils_reception(approach, approach.localizer, pose);
+  const ApproachGeometry& geometry = reception.geometry;
+  LocalizerReading reading{.status = reception.path.status, .ident = approach.ident};
+  if (!reading.valid()) return reading;
+  const LinkGeometry& link = reception.path.link;
   const double angle_rad =
       wrap_pi(link.azimuth_from_station_true_rad - geometry.localizer_back_azimuth_rad);
-  if (!within_radio_line_of_sight(approach.localizer.elevation_m, pose.altitude_msl_m,
-                                  link.ground_distance_m)) {
-    reading.status = SignalStatus::kBelowRadioHorizon;
-    return reading;
-  }
   reading.status = coverage_status(link, angle_rad);
-  if (reading.status != SignalStatus::kValid) return reading;
+  if (!reading.valid()) return reading;
   reading.angle_off_course_rad = angle_rad;
   reading.ddm = kLocalizerFullScaleDdm * angle_rad / geometry.course_half_width_rad;
   reading.deviation = std::clamp(reading.ddm / kLocalizerFullScaleDdm, -1.0, 1.0);

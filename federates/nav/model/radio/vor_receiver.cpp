@@ -1,6 +1,7 @@
 #include "nav/model/radio/vor_receiver.hpp"
 
 #include "nav/model/radio/radio_geometry.hpp"
+#include "nav/model/radio/receiver_link.hpp"
 #include "nav/model/radio/service_volume.hpp"
 #include "nav/model/radio/station_checks.hpp"
 
@@ -38,17 +39,13 @@ VorReading VorReceiver::read(const Navaid& vor, const AircraftPose& pose,
   if (!has_vor(vor)) {
     throw std::invalid_argument("VorReceiver: navaid '" + vor.ident + "' has no VOR");
   }
-  VorReading reading;
-  reading.ident = vor.ident;
-  if (!pose_problem(pose).empty() || !std::isfinite(obs_course_magnetic_rad)) {
-    reading.status = SignalStatus::kInvalidInput;
-    return reading;
-  }
-  const LinkGeometry link =
-      link_geometry(vor.position, pose.lat_rad, pose.lon_rad, pose.altitude_msl_m);
-  reading.status = vhf_reception(vhf_service_class(vor), link, vor.position.elevation_m,
-                                 pose.altitude_msl_m);
-  if (reading.status != SignalStatus::kValid) return reading;
+  // A non-finite OBS is a bad per-frame input like a bad pose.
+  VorReading reading{.status = SignalStatus::kInvalidInput, .ident = vor.ident};
+  if (!std::isfinite(obs_course_magnetic_rad)) return reading;
+  const ReceiverLink path = vhf_receiver_link(vor.position, vhf_service_class(vor), pose);
+  reading.status = path.status;
+  if (!reading.valid()) return reading;
+  const LinkGeometry& link = path.link;
   if (link.elevation_angle_rad > settings_.cone_of_confusion_elevation_rad) {
     reading.status = SignalStatus::kConeOfConfusion;
     return reading;
