@@ -45,6 +45,7 @@ struct Options {
   std::string profile = "fedsim_loopback";
   std::string sync_qos = "best_effort";
   bool skip_realtime = false;
+  bool no_state = false;  // followers only acknowledge (as the plain DDS star does)
 };
 
 std::string bin_dir() {
@@ -71,7 +72,8 @@ json run_federation(const Options& o, const std::string& mode, double rate_hz, i
   };
   for (int i = 0; i < o.federates; ++i) {
     const std::string name = "f" + std::to_string(i);
-    std::vector<std::string> argv{bin_dir() + "/fedsim-synthetic", "--publish"};
+    std::vector<std::string> argv{bin_dir() + "/fedsim-synthetic"};
+    if (!o.no_state) argv.push_back("--publish");
     for (auto& a : common(name)) argv.push_back(a);
     children.push_back(std::make_unique<ChildProcess>(argv, dir + "/" + name + ".log"));
     expect += (i ? "," : "") + name;
@@ -189,6 +191,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"best_effort", "reliable"}))->capture_default_str();
   app.add_option("--seedproto", o.seedproto, "also run the seed protocol baseline (path to seedproto)");
   app.add_flag("--lockstep-only", o.skip_realtime, "skip the realtime phases");
+  app.add_flag("--no-state", o.no_state,
+               "followers publish no state sample (tick and acknowledgement only: the same samples "
+               "per frame as a plain DDS lockstep star)");
   CLI11_PARSE(app, argc, argv);
 
   const std::string dir = fedsim::util::temp_dir("bench-federation");
@@ -197,6 +202,7 @@ int main(int argc, char** argv) {
   out["host_cpus"] = std::thread::hardware_concurrency();
   out["participant_profile"] = o.profile;
   out["sync_qos"] = o.sync_qos;
+  out["state_samples"] = !o.no_state;
   std::cerr << "udp ping-pong baseline...\n";
   out["udp_ping_pong"] = udp_ping_pong(20000);
   std::cerr << "lockstep, " << o.lockstep_frames << " frames, " << o.federates << " federates...\n";
