@@ -1,0 +1,23 @@
+// An ILS approach record (nav::IlsApproach) from the project's data files, without the
+// navigation database: the row of data/nav/ils.csv for the runway end, parsed and checked by
+// common/navdb's parse_ils_row() (the database builder's own reader), its threshold from the
+// runway table (data/nav/runways.csv through common/airports). For batch runs and tests that
+// fly an approach with the flight model alone; a federation reads the database.
+#pragma once
+
+#include "common/airports/runway_table.hpp"
+#include "common/navdb/nav_records.hpp"
+
+#include <string>
+
+namespace fedsim::flight::afcs {
+
+/// Throws csv::CsvError ("file:line: column: problem") for a bad row, std::invalid_argument when
+/// the table has no ILS for the runway end (naming the file, airport and runway).
+nav::IlsApproach load_ils_approach(const std::string& ils_csv_path, const RunwayTable& runways,
+                                   const std::string& airport, const std::string& runway);
+
+/// data/nav/ils.csv and data/nav/runways.csv of this checkout.
+nav::IlsApproach load_default_ils_approach(const std::string& airport, const std::string& runway);
+
+}  // namespace fedsim::flight::afcs
