@@ -78,7 +78,11 @@ Afcs::Afcs(const AfcsParameters& parameters, double dt_s, TransitionCallback on_
       pitch_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
       rudder_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
       elevator_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
-      bank_rate_(parameters_.roll.bank_rate_limit_radps, dt_s_) {}
+      bank_rate_(parameters_.roll.bank_rate_limit_radps, dt_s_),
+      side_force_(parameters_.lateral.side_force_filter_s, dt_s_),
+      trim_load_(parameters_.trim_filter_s, dt_s_),
+      pitch_command_rate_(parameters_.command_rate_filter_s, dt_s_),
+      bank_command_rate_(parameters_.command_rate_filter_s, dt_s_) {}
 
 void Afcs::reset() {
   logic_.reset();
@@ -100,6 +104,7 @@ const AfcsOutputs& Afcs::step(const AfcsInputs& in) {
     hold_after_bad_sample();
     return outputs_;
   }
+  side_force_.step(in.aircraft.lateral_specific_force_mps2);
   const Guidance g = evaluate_guidance(in);
   const ModeConditions c = conditions(in, g);
   const ModeState before = logic_.state();
@@ -120,13 +125,15 @@ const AfcsOutputs& Afcs::step(const AfcsInputs& in) {
     pitch_fader_.reset(0, pitch_c);
     bank_rate_.reset(bank_c);
   }
+  previous_bank_command_rad_ = bank_command_rad_;
+  previous_pitch_command_rad_ = pitch_command_rad_;
   bank_command_rad_ = bank_c;
   pitch_command_rad_ = pitch_c;
   if (m.autopilot_engaged) {
     if (!before.autopilot_engaged) track_pilot(in, g);  // engagement: take over from the pilot
     fly_surfaces(in, g, pitch_c, bank_c);
     fly_rudder_and_rollout(in, g);
-    auto_trim(in);
+    auto_trim(in, g.schedule);
   } else {
     track_pilot(in, g);
   }
@@ -218,7 +225,7 @@ void Afcs::enter_modes(const ModeState& before, const AfcsInputs& in, const Guid
       case LateralMode::kRollAttitude: hold_bank_rad_ = a.roll_rad; break;
       case LateralMode::kGoAround: hold_track_rad_ = a.track_true_rad; break;
       case LateralMode::kAlign: yaw_.engage_align(outputs_.rudder, a.heading_true_rad); break;
-      case LateralMode::kRollout: rollout_.reset(); break;
+      case LateralMode::kRollout: rollout_.reset(outputs_.rudder); break;
       default: break;
     }
     if (rudder_law(before.lateral) != 0 && rudder_law(m.lateral) == 0) {
@@ -250,7 +257,7 @@ void Afcs::enter_modes(const ModeState& before, const AfcsInputs& in, const Guid
       default: break;
     }
     if (is_path_mode(m.vertical) && !is_path_mode(before.vertical)) {
-      path_loop_.engage(pitch_command_rad_, 0.0, a.roll_rad, g.schedule);
+      path_loop_.engage(pitch_command_rad_, 0.0, a.roll_rad, g.schedule, a.angle_of_attack_rad);
       path_fader_.reset(static_cast<int>(m.vertical), g.path_rad);
     }
   }
@@ -283,12 +290,21 @@ double Afcs::bank_command_rad(const AfcsInputs& in, const Guidance& g) {
                                           in.mcp.bank_limit_rad);
       break;
     case LateralMode::kLocalizer:
+      bank = bank_for_direction_error_rad(
+          localizer_track_command_rad(g.cross_track_left_m, in.ils.localizer_course_true_rad, a.ground_speed_mps, lat) -
+              a.track_true_rad,
+          v, tau, lat.approach_bank_limit_rad);
+      break;
     case LateralMode::kAlign: {
+      // Decrabbed, the aircraft sideslips into the wind and the side force Y = m f_y pushes it
+      // downwind; the bank that holds the track against it is asin(-f_y / g) (the forward slip),
+      // plus the localizer law's own correction, within the low-height bank limit.
+      const double limit = lat.low_height_bank_limit_rad;
+      const double slip_bank = std::asin(std::clamp(-side_force_.output() / kG, -std::sin(limit), std::sin(limit)));
       const double track_c = localizer_track_command_rad(g.cross_track_left_m, in.ils.localizer_course_true_rad,
                                                          a.ground_speed_mps, lat);
-      const double limit = logic_.state().lateral == LateralMode::kAlign ? lat.low_height_bank_limit_rad
-                                                                          : lat.approach_bank_limit_rad;
-      bank = bank_for_direction_error_rad(track_c - a.track_true_rad, v, tau, limit);
+      bank = std::clamp(slip_bank + bank_for_direction_error_rad(track_c - a.track_true_rad, v, tau, limit), -limit,
+                        limit);
       break;
     }
     case LateralMode::kGoAround:
@@ -345,7 +361,18 @@ double Afcs::pitch_command_rad(const AfcsInputs& in, const Guidance& g) {
     path_command_rad_ = gamma_c;
     const double pitch_max = mode == VerticalMode::kGoAround ? p.speed_on_elevator.go_around_pitch_max_rad
                                                              : p.path.pitch_max_rad;
-    pitch = path_loop_.step(gamma_c, g.path_rad, a.roll_rad, pitch_max, g.schedule);
+    // The flare's lead: gamma follows pitch with the path lag T, so the pitch leads the
+    // commanded path by T d(gamma_c)/dt = T (-hdot / tau_flare) / V (the law's hdot_c changes at
+    // -hdot / tau).
+    // The flare is short (6-8 s, a few path-loop time constants): its path error also acts
+    // through an extra proportional gain (not integrated), so the sink rate follows the law
+    // instead of lagging it into the runway.
+    const double lead = mode == VerticalMode::kFlare
+                            ? p.path.path_lag_s * (-a.vertical_speed_mps) /
+                                      (flare_.time_constant_s * std::max(a.ground_speed_mps, 10.0)) +
+                                  p.autoland.flare_extra_path_gain * p.path.proportional_gain * (gamma_c - g.path_rad)
+                            : 0.0;
+    pitch = path_loop_.step(gamma_c, g.path_rad, a.roll_rad, pitch_max, g.schedule, a.angle_of_attack_rad, lead);
   } else if (mode == VerticalMode::kPitchAttitude) {
     hold_pitch_rad_ = std::clamp(hold_pitch_rad_ + p.cws_pitch_rate_radps * in.mcp.pilot_pitch_input * dt_s_,
                                  p.engage_pitch_min_rad, p.engage_pitch_max_rad);
@@ -356,19 +383,29 @@ double Afcs::pitch_command_rad(const AfcsInputs& in, const Guidance& g) {
                                      p.autoland.rollout_pitch_rad);
     pitch = derotation_pitch_rad_;
   }
-  if (!is_path_mode(mode)) path_loop_.engage(pitch, 0.0, a.roll_rad, g.schedule);
+  if (!is_path_mode(mode)) path_loop_.engage(pitch, 0.0, a.roll_rad, g.schedule, a.angle_of_attack_rad);
   return pitch_fader_.step(static_cast<int>(mode), pitch);
 }
 
 void Afcs::fly_surfaces(const AfcsInputs& in, const Guidance& g, double pitch_c, double bank_c) {
   const AfcsAircraftState& a = in.aircraft;
-  double elevator = pitch_loop_.step(pitch_c, a.pitch_rad, g.pitch_attitude_rate_radps, g.schedule);
+  constexpr double kMaxCommandRateRadps = 10.0 * units::kDegToRad;
+  // The commands' own rates, smoothed: a rate that steps (a rate limit starting or ending) must
+  // not step a surface.
+  const double pitch_c_rate = pitch_command_rate_.step(std::clamp(
+      (pitch_c - previous_pitch_command_rad_) / dt_s_, -kMaxCommandRateRadps, kMaxCommandRateRadps));
+  const double bank_c_rate = bank_command_rate_.step(std::clamp(
+      (bank_c - previous_bank_command_rad_) / dt_s_, -kMaxCommandRateRadps, kMaxCommandRateRadps));
+  const double pitch_rate_error = g.pitch_attitude_rate_radps - pitch_c_rate;
+  // The loop's demand is elevator + trim: the elevator servo takes the part the trim does not.
+  const double demand = pitch_loop_.step(pitch_c, a.pitch_rad, pitch_rate_error, g.schedule);
+  double elevator = std::clamp(demand - a.pitch_trim, -1.0, 1.0);
   // With the nose wheel down in the rollout the column is released to neutral (faded).
   const bool nose_down = logic_.state().vertical == VerticalMode::kRollout && a.nose_gear_on_ground;
   elevator = elevator_fader_.step(nose_down ? 1 : 0, nose_down ? 0.0 : elevator);
-  if (nose_down) pitch_loop_.engage(elevator, pitch_c - a.pitch_rad, g.pitch_attitude_rate_radps, g.schedule);
+  if (nose_down) pitch_loop_.engage(elevator + a.pitch_trim, pitch_c - a.pitch_rad, pitch_rate_error, g.schedule);
   outputs_.elevator = elevator;
-  outputs_.aileron = roll_loop_.step(bank_c, a.roll_rad, g.bank_rate_radps, g.schedule);
+  outputs_.aileron = roll_loop_.step(bank_c, a.roll_rad, g.bank_rate_radps - bank_c_rate, g.schedule);
 }
 
 void Afcs::fly_rudder_and_rollout(const AfcsInputs& in, const Guidance& g) {
@@ -395,14 +432,18 @@ void Afcs::fly_rudder_and_rollout(const AfcsInputs& in, const Guidance& g) {
   outputs_.rudder = rudder_fader_.step(rudder_law(lateral), rudder);
 }
 
-void Afcs::auto_trim(const AfcsInputs& in) {
+void Afcs::auto_trim(const AfcsInputs& in, double schedule) {
   // Unload the elevator servo onto the trim (the stabiliser of the 737): run the trim motor in
-  // the elevator's sense while the elevator has been off neutral for trim_delay, until it is back
-  // within trim_stop (hysteresis: the motor does not chatter).
-  const double e = outputs_.elevator;
+  // the elevator's sense while the elevator's steady load (low-passed) has been off neutral for
+  // trim_delay, until it is back within trim_stop. The trim is a second, slow integrator beside
+  // the pitch loop's: acting on the raw elevator with a narrow hysteresis it limit-cycled with
+  // the phugoid (+-0.07 of trim every 13 s at 250 KCAS); on the steady load it does not.
+  const double e = trim_load_.step(outputs_.elevator);
   const AfcsParameters& p = parameters_;
   const bool on_runway = logic_.state().vertical == VerticalMode::kRollout || in.aircraft.main_gear_on_ground;
+  trim_output_ = 0;
   if (on_runway || !p.auto_trim) {
+    trim_load_.reset(outputs_.elevator);
     trim_command_ = 0;
     trim_elevator_time_s_ = 0.0;
     return;
@@ -413,14 +454,27 @@ void Afcs::auto_trim(const AfcsInputs& in) {
     trim_elevator_time_s_ = std::abs(e) > p.trim_start_elevator ? trim_elevator_time_s_ + dt_s_ : 0.0;
     if (trim_elevator_time_s_ > p.trim_delay_s) trim_command_ = e > 0 ? 1 : -1;
   }
-  if (trim_command_ != 0) trim_elevator_time_s_ = 0.0;
+  if (trim_command_ == 0) {
+    trim_duty_credit_ = 0.0;
+    return;
+  }
+  trim_elevator_time_s_ = 0.0;
+  // Pulses: on in a share `schedule` of the frames (at most all of them).
+  trim_duty_credit_ += std::min(schedule, 1.0);
+  if (trim_duty_credit_ >= 1.0) {
+    trim_duty_credit_ -= 1.0;
+    trim_output_ = trim_command_;
+  }
 }
 
 void Afcs::track_pilot(const AfcsInputs& in, const Guidance& g) {
   // Autopilot off: its servos follow the pilot's commands, so that engagement takes over there.
   const AfcsAircraftState& a = in.aircraft;
-  pitch_loop_.engage(a.elevator, pitch_command_rad_ - a.pitch_rad, g.pitch_attitude_rate_radps, g.schedule);
+  pitch_loop_.engage(std::clamp(a.elevator + a.pitch_trim, -1.0, 1.0), pitch_command_rad_ - a.pitch_rad,
+                     g.pitch_attitude_rate_radps, g.schedule);
   roll_loop_.engage(a.aileron, bank_command_rad_ - a.roll_rad, g.bank_rate_radps, g.schedule);
+  previous_pitch_command_rad_ = pitch_command_rad_;
+  previous_bank_command_rad_ = bank_command_rad_;
   yaw_.engage_coordination(a.rudder, a.sideslip_rad);
   elevator_fader_.reset(0, a.elevator);
   rudder_fader_.reset(rudder_law(logic_.state().lateral), a.rudder);
@@ -429,7 +483,9 @@ void Afcs::track_pilot(const AfcsInputs& in, const Guidance& g) {
   outputs_.rudder = a.rudder;
   outputs_.rollout_engaged = false;
   trim_command_ = 0;
+  trim_output_ = 0;
   trim_elevator_time_s_ = 0.0;
+  trim_load_.reset(a.elevator);
 }
 
 void Afcs::fly_throttle(const AfcsInputs& in, const Guidance&) {
@@ -449,7 +505,7 @@ void Afcs::fill_annunciation(const Guidance& g, double pitch_c, double bank_c) {
   const ModeState& m = logic_.state();
   outputs_.autopilot_engaged = m.autopilot_engaged;
   outputs_.autothrottle_engaged = m.autothrottle_engaged && m.thrust != ThrustMode::kArm;
-  outputs_.pitch_trim_command = m.autopilot_engaged ? trim_command_ : 0;
+  outputs_.pitch_trim_command = m.autopilot_engaged ? trim_output_ : 0;
   if (!outputs_.rollout_engaged) {
     outputs_.steering = 0.0;
     outputs_.brake_left = outputs_.brake_right = 0.0;

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "common/control/fader.hpp"
+#include "common/control/first_order_lag.hpp"
 #include "common/control/pid.hpp"
 #include "common/control/rate_limiter.hpp"
 #include "flight/model/afcs/afcs_inputs.hpp"
@@ -63,7 +64,7 @@ class Afcs {
   void fly_surfaces(const AfcsInputs& in, const Guidance& g, double pitch_c, double bank_c);
   void fly_rudder_and_rollout(const AfcsInputs& in, const Guidance& g);
   void fly_throttle(const AfcsInputs& in, const Guidance& g);
-  void auto_trim(const AfcsInputs& in);
+  void auto_trim(const AfcsInputs& in, double schedule);
   void track_pilot(const AfcsInputs& in, const Guidance& g);
   void fill_annunciation(const Guidance& g, double pitch_c, double bank_c);
   void hold_after_bad_sample();
@@ -84,6 +85,10 @@ class Afcs {
   control::Fader rudder_fader_;
   control::Fader elevator_fader_;
   control::RateLimiter bank_rate_;
+  control::FirstOrderLag side_force_;  // lateral specific force, low-passed [m/s^2]
+  control::FirstOrderLag trim_load_;   // elevator command, low-passed: the auto-trim's input
+  control::FirstOrderLag pitch_command_rate_;  // d(theta_c)/dt, smoothed [rad/s]
+  control::FirstOrderLag bank_command_rate_;   // d(phi_c)/dt, smoothed [rad/s]
 
   AfcsOutputs outputs_;
   std::string_view input_problem_;
@@ -99,11 +104,15 @@ class Afcs {
   double level_change_direction_ = 1.0;  // +1 climbing, -1 descending
   FlareLaw flare_;
   double derotation_pitch_rad_ = 0.0;
-  double pitch_command_rad_ = 0.0;   // last frame's (faded) pitch command
+  double pitch_command_rad_ = 0.0;   // this frame's (faded) pitch command
   double bank_command_rad_ = 0.0;
+  double previous_pitch_command_rad_ = 0.0;  // last frame's: the command rates
+  double previous_bank_command_rad_ = 0.0;
   double path_command_rad_ = 0.0;
   double trim_elevator_time_s_ = 0.0;
-  int trim_command_ = 0;
+  int trim_command_ = 0;        // the motor's direction while trimming
+  double trim_duty_credit_ = 0.0;  // pulse modulation of the trim motor [frames]
+  int trim_output_ = 0;          // this frame's trim command (a pulse of trim_command_ or 0)
 };
 
 }  // namespace fedsim::flight::afcs

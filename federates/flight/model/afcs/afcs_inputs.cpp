@@ -27,13 +27,15 @@ std::string_view aircraft_problem(const AfcsAircraftState& a) {
   if (!in(a.altitude_m, -1000.0, 20000.0)) return "aircraft.altitude_m";
   if (!in(a.vertical_speed_mps, -150.0, 150.0)) return "aircraft.vertical_speed_mps";
   if (!in(a.radio_height_m, -10.0, 10000.0)) return "aircraft.radio_height_m";
-  if (!in(a.angle_of_attack_rad, -kPi / 2, kPi / 2)) return "aircraft.angle_of_attack_rad";
+  if (!in(a.angle_of_attack_rad, -kPi, kPi)) return "aircraft.angle_of_attack_rad";
   if (!in(a.sideslip_rad, -kPi / 2, kPi / 2)) return "aircraft.sideslip_rad";
+  if (!in(a.lateral_specific_force_mps2, -50.0, 50.0)) return "aircraft.lateral_specific_force_mps2";
   if (!in(a.longitudinal_acceleration_mps2, -100.0, 100.0)) return "aircraft.longitudinal_acceleration_mps2";
   if (!in(a.elevator, -1.0, 1.0)) return "aircraft.elevator";
   if (!in(a.aileron, -1.0, 1.0)) return "aircraft.aileron";
   if (!in(a.rudder, -1.0, 1.0)) return "aircraft.rudder";
   if (!in(a.throttle, 0.0, 1.0)) return "aircraft.throttle";
+  if (!in(a.pitch_trim, -1.0, 1.0)) return "aircraft.pitch_trim";
   return {};
 }
 

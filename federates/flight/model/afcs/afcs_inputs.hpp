@@ -32,8 +32,9 @@ struct AfcsAircraftState {
   double altitude_m = 0.0;           // altimeter altitude above MSL [m], [-1000, 20000]
   double vertical_speed_mps = 0.0;   // + up [m/s], [-150, 150]
   double radio_height_m = 0.0;       // main-gear height above the runway [m], [-10, 10000]
-  double angle_of_attack_rad = 0.0;  // alpha [rad], [-pi/2, pi/2]
+  double angle_of_attack_rad = 0.0;  // alpha [rad], [-pi, pi] (meaningless at taxi speed)
   double sideslip_rad = 0.0;         // beta, + wind from the right [rad], [-pi/2, pi/2]
+  double lateral_specific_force_mps2 = 0.0;  // accelerometer, body y, + right [m/s^2], [-50, 50]
   double longitudinal_acceleration_mps2 = 0.0;  // d(ground speed)/dt along the track [m/s^2]
   bool main_gear_on_ground = false;  // a main wheel carries load
   bool nose_gear_on_ground = false;  // the nose wheel carries load
@@ -43,6 +44,7 @@ struct AfcsAircraftState {
   double aileron = 0.0;   // -1..1, + right wing down
   double rudder = 0.0;    // -1..1, + nose right
   double throttle = 0.0;  // 0..1 (the levers; all engines together)
+  double pitch_trim = 0.0;  // the pitch trim's present position, -1..1 in the elevator's sense
 };
 
 struct AfcsIlsSignals {

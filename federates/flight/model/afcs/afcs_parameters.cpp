@@ -32,6 +32,7 @@ void AfcsParameters::validate() const {
   within("min_gain_schedule", min_gain_schedule, 0.01, 1.0);
   within("max_gain_schedule", max_gain_schedule, 1.0, 100.0);
   positive("fade_time_s", fade_time_s);
+  positive("command_rate_filter_s", command_rate_filter_s);
   positive("cws_pitch_rate_radps", cws_pitch_rate_radps);
   positive("cws_roll_rate_radps", cws_roll_rate_radps);
   within("engage_bank_limit_rad", engage_bank_limit_rad, 1 * kDeg, 60 * kDeg);
@@ -44,6 +45,7 @@ void AfcsParameters::validate() const {
   within("trim_start_elevator", trim_start_elevator, 0.0, 1.0);
   within("trim_stop_elevator", trim_stop_elevator, 0.0, trim_start_elevator);
   non_negative("trim_delay_s", trim_delay_s);
+  positive("trim_filter_s", trim_filter_s);
 
   positive("pitch.attitude_gain_per_rad", pitch.attitude_gain_per_rad);
   non_negative("pitch.integral_gain_per_rad_s", pitch.integral_gain_per_rad_s);
@@ -55,6 +57,7 @@ void AfcsParameters::validate() const {
   non_negative("yaw.sideslip_gain_per_rad", yaw.sideslip_gain_per_rad);
   non_negative("yaw.sideslip_integral_gain_per_rad_s", yaw.sideslip_integral_gain_per_rad_s);
   positive("yaw.align_heading_gain_per_rad", yaw.align_heading_gain_per_rad);
+  non_negative("yaw.align_heading_integral_per_rad_s", yaw.align_heading_integral_per_rad_s);
   non_negative("yaw.align_yaw_rate_gain_per_radps", yaw.align_yaw_rate_gain_per_radps);
   positive("yaw.align_heading_rate_radps", yaw.align_heading_rate_radps);
 
@@ -63,6 +66,7 @@ void AfcsParameters::validate() const {
   within("path.pitch_min_rad", path.pitch_min_rad, -45 * kDeg, 0.0);
   within("path.pitch_max_rad", path.pitch_max_rad, 0.0, 45 * kDeg);
   within("path.turn_compensation_rad", path.turn_compensation_rad, 0.0, 30 * kDeg);
+  non_negative("path.path_lag_s", path.path_lag_s);
   positive("altitude.time_constant_s", altitude.time_constant_s);
   positive("altitude.capture_acceleration_mps2", altitude.capture_acceleration_mps2);
   positive("altitude.hold_band_m", altitude.hold_band_m);
@@ -87,12 +91,14 @@ void AfcsParameters::validate() const {
   non_negative("lateral.roll_in_time_s", lateral.roll_in_time_s);
   within("lateral.max_on_scale_deviation", lateral.max_on_scale_deviation, 0.1, 1.0);
   within("lateral.low_height_bank_limit_rad", lateral.low_height_bank_limit_rad, 1 * kDeg, 15 * kDeg);
+  positive("lateral.side_force_filter_s", lateral.side_force_filter_s);
 
   positive("autoland.flare_arm_height_m", autoland.flare_arm_height_m);
   within("autoland.align_height_m", autoland.align_height_m, 0.0, autoland.flare_arm_height_m);
   within("autoland.flare_height_m", autoland.flare_height_m, 1.0, autoland.flare_arm_height_m);
   within("autoland.retard_height_m", autoland.retard_height_m, 0.0, autoland.flare_height_m);
   within("autoland.touchdown_sink_rate_mps", autoland.touchdown_sink_rate_mps, 0.05, 3.0);
+  within("autoland.flare_extra_path_gain", autoland.flare_extra_path_gain, 0.0, 10.0);
   positive("autoland.derotation_rate_radps", autoland.derotation_rate_radps);
   within("autoland.rollout_pitch_rad", autoland.rollout_pitch_rad, -5 * kDeg, 5 * kDeg);
 
@@ -100,6 +106,7 @@ void AfcsParameters::validate() const {
   non_negative("rollout.heading_gain_per_rad", rollout.heading_gain_per_rad);
   non_negative("rollout.yaw_rate_gain_per_radps", rollout.yaw_rate_gain_per_radps);
   non_negative("rollout.rudder_scale", rollout.rudder_scale);
+  non_negative("rollout.rudder_integral_per_s", rollout.rudder_integral_per_s);
   within("rollout.steering_limit", rollout.steering_limit, 0.0, 1.0);
   positive("rollout.taxi_speed_mps", rollout.taxi_speed_mps);
   non_negative("rollout.autobrake_delay_s", rollout.autobrake_delay_s);
@@ -110,6 +117,8 @@ void AfcsParameters::validate() const {
   non_negative("rollout.brake_proportional_per_mps2", rollout.brake_proportional_per_mps2);
   non_negative("rollout.brake_integral_per_mps2_s", rollout.brake_integral_per_mps2_s);
   positive("rollout.spoiler_rate_per_s", rollout.spoiler_rate_per_s);
+  positive("rollout.deceleration_filter_s", rollout.deceleration_filter_s);
+  positive("rollout.brake_rate_per_s", rollout.brake_rate_per_s);
 
   non_negative("autothrottle.speed_proportional_per_mps", autothrottle.speed_proportional_per_mps);
   non_negative("autothrottle.speed_integral_per_mps_s", autothrottle.speed_integral_per_mps_s);

@@ -18,9 +18,9 @@ struct PitchLoopGains {
 
 /// Bank -> aileron (inner loop).
 struct RollLoopGains {
-  double attitude_gain_per_rad = 4.0;
-  double integral_gain_per_rad_s = 0.5;
-  double rate_gain_per_radps = 2.5;
+  double attitude_gain_per_rad = 6.0;
+  double integral_gain_per_rad_s = 1.0;
+  double rate_gain_per_radps = 3.5;
   double bank_rate_limit_radps = 5.0 * units::kDegToRad;  // roll-command rate (comfort)
 };
 
@@ -28,9 +28,10 @@ struct RollLoopGains {
 struct YawChannelGains {
   double sideslip_gain_per_rad = 2.0;
   double sideslip_integral_gain_per_rad_s = 1.0;
-  double align_heading_gain_per_rad = 2.5;      // rudder per rad of heading error in ALIGN
+  double align_heading_gain_per_rad = 4.0;      // rudder per rad of heading error in ALIGN
+  double align_heading_integral_per_rad_s = 2.0;
   double align_yaw_rate_gain_per_radps = 3.0;
-  double align_heading_rate_radps = 1.5 * units::kDegToRad;  // decrab rate of the heading command
+  double align_heading_rate_radps = 3.0 * units::kDegToRad;  // decrab rate of the heading command
 };
 
 /// Flight-path angle -> pitch attitude (the path loop every path mode flies through).
@@ -40,6 +41,7 @@ struct FlightPathGains {
   double pitch_min_rad = -10.0 * units::kDegToRad;
   double pitch_max_rad = 20.0 * units::kDegToRad;
   double turn_compensation_rad = 18.0 * units::kDegToRad;  // CL/CL_alpha at the reference CAS
+  double path_lag_s = 2.3;  // 1/Z_alpha at approach: the flare's pitch lead (T x d gamma_c/dt)
 };
 
 /// Altitude capture and hold.
@@ -79,15 +81,17 @@ struct LateralGains {
   double roll_in_time_s = 2.0;           // lead added for the roll into the capture turn
   double max_on_scale_deviation = 0.95;
   double low_height_bank_limit_rad = 5.0 * units::kDegToRad;  // in ALIGN
+  double side_force_filter_s = 1.0;  // low-pass of the lateral specific force (ALIGN's slip bank)
 };
 
 /// Autoland heights and the flare.
 struct AutolandGains {
   double flare_arm_height_m = 1500.0 * units::kFtToM;
-  double align_height_m = 100.0 * units::kFtToM;
+  double align_height_m = 35.0 * units::kFtToM;
   double flare_height_m = 50.0 * units::kFtToM;
   double retard_height_m = 27.0 * units::kFtToM;  // 737 autoland "RETARD" at 27 ft RA
-  double touchdown_sink_rate_mps = 2.0 * units::kFtToM;  // the flare law's asymptote
+  double touchdown_sink_rate_mps = 1.0 * units::kFtToM;  // the flare law's asymptote
+  double flare_extra_path_gain = 1.5;  // FLARE's path error gain beyond the path loop's (P only)
   double derotation_rate_radps = 1.5 * units::kDegToRad;
   double rollout_pitch_rad = 0.0;
 };
@@ -97,7 +101,8 @@ struct RolloutGains {
   double cross_track_gain_per_m = 0.02;     // steering per m left of the centreline
   double heading_gain_per_rad = 1.5;        // steering per rad of heading error
   double yaw_rate_gain_per_radps = 1.5;
-  double rudder_scale = 2.0;                // rudder = scale x the steering law (aero phase)
+  double rudder_scale = 2.0;                // rudder = PI(the steering law): proportional part
+  double rudder_integral_per_s = 1.0;       // ... and its integral (holds a crosswind's rudder)
   double steering_limit = 0.2;              // of the nose wheel's full travel
   double taxi_speed_mps = 1.0;              // "stopped" below it
   double autobrake_delay_s = 1.0;           // after main-gear touchdown
@@ -106,8 +111,10 @@ struct RolloutGains {
   double deceleration_2_mps2 = 5.0 * units::kFtToM;
   double deceleration_3_mps2 = 7.2 * units::kFtToM;
   double deceleration_max_mps2 = 14.0 * units::kFtToM;
-  double brake_proportional_per_mps2 = 0.3;
-  double brake_integral_per_mps2_s = 0.4;
+  double brake_proportional_per_mps2 = 0.1;   // the brakes give ~4 m/s^2 per unit: loop gain 0.4
+  double brake_integral_per_mps2_s = 0.3;
+  double deceleration_filter_s = 0.3;
+  double brake_rate_per_s = 1.0;              // pressure build-up
   double spoiler_rate_per_s = 2.0;
 };
 
@@ -130,6 +137,7 @@ struct AfcsParameters {
   double min_gain_schedule = 0.25;
   double max_gain_schedule = 4.0;
   double fade_time_s = 2.0;          // mode-change faders
+  double command_rate_filter_s = 0.5;  // smoothing of the attitude commands' rates (rate damping reference)
   double cws_pitch_rate_radps = 3.0 * units::kDegToRad;  // per unit of column force
   double cws_roll_rate_radps = 6.0 * units::kDegToRad;
   double engage_bank_limit_rad = 30.0 * units::kDegToRad;
@@ -139,9 +147,14 @@ struct AfcsParameters {
   double authority_pitch_min_rad = -15.0 * units::kDegToRad;
   double authority_pitch_max_rad = 25.0 * units::kDegToRad;
   double wings_level_bank_rad = 6.0 * units::kDegToRad;
-  double trim_start_elevator = 0.05;  // auto-trim runs while |elevator| exceeds it ...
-  double trim_stop_elevator = 0.01;   // ... until it falls below this
-  double trim_delay_s = 2.0;          // ... for longer than this
+  // Auto-trim acts on the elevator low-passed over trim_filter_s (the steady load, not the
+  // manoeuvring): it runs while that exceeds trim_start for trim_delay, until below trim_stop,
+  // in pulses whose duty is the gain schedule (the trim's moment grows with qbar: "when airspeed
+  // increases, the trim rate decreases", as Boeing's autopilot trim does).
+  double trim_start_elevator = 0.05;
+  double trim_stop_elevator = 0.01;
+  double trim_delay_s = 2.0;
+  double trim_filter_s = 1.0;
   bool auto_trim = true;              // false: no trim command (an aircraft without a trim motor)
   PitchLoopGains pitch;
   RollLoopGains roll;

@@ -88,8 +88,10 @@ ApproachPoint ClosedLoopFlight::approach_point(double lat_rad, double lon_rad, d
 const FlightSample& ClosedLoopFlight::step() {
   const AircraftOutputs& o = model_->outputs();
   const nav::AircraftPose pose = nav_pose(o);
-  const nav::LocalizerReading loc = nav::LocalizerReceiver().read(approach_, pose);
-  const nav::GlideSlopeReading gs = nav::GlideSlopeReceiver().read(approach_, pose);
+  nav::LocalizerReading loc = nav::LocalizerReceiver().read(approach_, pose);
+  nav::GlideSlopeReading gs = nav::GlideSlopeReceiver().read(approach_, pose);
+  if (localizer_off_air_) loc = nav::LocalizerReading{nav::SignalStatus::kStationOffAir, loc.ident};
+  if (glide_slope_off_air_) gs = nav::GlideSlopeReading{nav::SignalStatus::kStationOffAir, gs.ident};
   AfcsInputs in;
   in.aircraft = afcs_aircraft_state(o, pack_, gear_, pilot_);
   in.ils = ils_signals(loc, gs, approach_, geometry_, pose);
@@ -97,7 +99,16 @@ const FlightSample& ClosedLoopFlight::step() {
   in.mcp = mcp_;
   pending_ = McpButtons{};
   const AfcsOutputs& out = afcs_->step(in);
-  const AircraftControls applied = apply_afcs_outputs(out, pilot_, pilot_.elevator_trim);
+  const AircraftControls applied = apply_afcs_outputs(out, pilot_, o.pitch_trim_norm);
+  // The autopilot's servos and the autothrottle back-drive column, wheel, pedals and levers,
+  // and trim switches are momentary: where the AFCS leaves a control, the pilot finds it.
+  if (out.autopilot_engaged) {
+    pilot_.elevator_trim = o.pitch_trim_norm;
+    pilot_.elevator = applied.elevator;
+    pilot_.aileron = applied.aileron;
+    pilot_.rudder = applied.rudder;
+  }
+  if (out.autothrottle_engaged) pilot_.throttle = applied.throttle;
   model_->set_controls(applied);
   model_->step(options_.frame_s);
   record(in, out, applied);
@@ -122,6 +133,9 @@ void ClosedLoopFlight::record(const AfcsInputs& in, const AfcsOutputs& out, cons
   s.heading_rad = o.euler.psi_rad;
   s.track_rad = o.ground_speed_mps > 1.0 ? std::atan2(o.velocity_ned_mps.y(), o.velocity_ned_mps.x()) : s.heading_rad;
   s.sideslip_rad = o.beta_rad;
+  s.bank_command_rad = out.flight_director_roll_rad;
+  s.pitch_command_rad = out.flight_director_pitch_rad;
+  s.path_command_rad = out.flight_path_command_rad;
   s.yaw_rate_radps = o.omega_body_wrt_earth_radps.z();
   s.localizer_valid = in.ils.localizer_valid;
   s.localizer_deviation = in.ils.localizer_deviation;
@@ -131,7 +145,7 @@ void ClosedLoopFlight::record(const AfcsInputs& in, const AfcsOutputs& out, cons
   s.aileron = applied.aileron;
   s.rudder = applied.rudder;
   s.throttle = applied.throttle[0];
-  s.pitch_trim = applied.elevator_trim;
+  s.pitch_trim = o.pitch_trim_norm;
   s.steering = applied.steering;
   s.brake = std::max(applied.brake_left, applied.brake_right);
   const AfcsAircraftState a = afcs_aircraft_state(o, pack_, gear_, applied);

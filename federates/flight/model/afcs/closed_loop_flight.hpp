@@ -38,6 +38,7 @@ struct FlightSample {
   double cas_mps = 0.0, ground_speed_mps = 0.0, vertical_speed_mps = 0.0;
   double pitch_rad = 0.0, roll_rad = 0.0, heading_rad = 0.0, track_rad = 0.0;
   double sideslip_rad = 0.0, yaw_rate_radps = 0.0;
+  double bank_command_rad = 0.0, pitch_command_rad = 0.0, path_command_rad = 0.0;  // the AFCS's
   double localizer_deviation = 0.0, glide_slope_deviation = 0.0;  // 0 when flagged
   bool localizer_valid = false, glide_slope_valid = false;
   double elevator = 0.0, aileron = 0.0, rudder = 0.0, throttle = 0.0, pitch_trim = 0.0;
@@ -61,10 +62,7 @@ struct ClosedLoopOptions {
   double frame_s = 0.02;                  // 50 Hz, the federation's frame
   AfcsParameters afcs;
   AircraftModel::Options model;           // defaults to RK4 on the flat earth
-  ClosedLoopOptions() {
-    model.integrator = IntegrationMethod::kRk4;
-    afcs.auto_trim = false;  // the flight model's trim has no rate yet
-  }
+  ClosedLoopOptions() { model.integrator = IntegrationMethod::kRk4; }
 };
 
 class ClosedLoopFlight {
@@ -112,6 +110,10 @@ class ClosedLoopFlight {
   ApproachPoint approach_point(double lat_rad, double lon_rad, double altitude_m) const;
   /// Set false to keep no history (the Monte Carlo keeps only the touchdown).
   void set_recording(bool on) { recording_ = on; }
+  /// Takes the localizer or the glide slope off the air (instructor failure): the receiver
+  /// then reads kStationOffAir, its numbers zeroed (nav_radio's convention for a flag).
+  void set_localizer_off_air(bool off) { localizer_off_air_ = off; }
+  void set_glide_slope_off_air(bool off) { glide_slope_off_air_ = off; }
 
  private:
   void record(const AfcsInputs& in, const AfcsOutputs& out, const AircraftControls& applied);
@@ -131,6 +133,8 @@ class ClosedLoopFlight {
   std::vector<FlightSample> history_;
   std::optional<Touchdown> touchdown_;
   bool recording_ = true;
+  bool localizer_off_air_ = false;
+  bool glide_slope_off_air_ = false;
 };
 
 /// The geodetic position of an approach point (the inverse of nav::course_coordinates: the

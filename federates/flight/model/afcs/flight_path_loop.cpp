@@ -24,22 +24,23 @@ control::PidParameters path_pid(const FlightPathGains& g) {
 FlightPathLoop::FlightPathLoop(const FlightPathGains& gains, double dt_s)
     : gains_(gains), pid_(path_pid(gains), dt_s) {}
 
-double FlightPathLoop::turn_compensation_rad(double bank_rad, double schedule) const {
+double FlightPathLoop::turn_compensation_rad(double bank_rad, double schedule, double alpha_rad) const {
   const double c = std::max(std::cos(bank_rad), 0.5);  // at most n = 2 worth
-  return schedule * gains_.turn_compensation_rad * (1.0 / c - 1.0);
+  return (1.0 - c) * std::max(schedule * gains_.turn_compensation_rad - alpha_rad, 0.0);
 }
 
 void FlightPathLoop::engage(double pitch_command_rad, double path_error_rad, double bank_rad,
-                            double schedule) {
-  const double pid_output = std::clamp(pitch_command_rad - turn_compensation_rad(bank_rad, schedule),
+                            double schedule, double alpha_rad) {
+  const double pid_output = std::clamp(pitch_command_rad - turn_compensation_rad(bank_rad, schedule, alpha_rad),
                                        gains_.pitch_min_rad, gains_.pitch_max_rad);
   pid_.engage(path_error_rad, pid_output);
   pitch_command_rad_ = pitch_command_rad;
 }
 
 double FlightPathLoop::step(double path_command_rad, double path_rad, double bank_rad,
-                            double pitch_max_rad, double schedule) {
-  const double theta = pid_.step(path_command_rad - path_rad) + turn_compensation_rad(bank_rad, schedule);
+                            double pitch_max_rad, double schedule, double alpha_rad, double feedforward_rad) {
+  const double theta = pid_.step(path_command_rad - path_rad) +
+                       turn_compensation_rad(bank_rad, schedule, alpha_rad) + feedforward_rad;
   pitch_command_rad_ = std::clamp(theta, gains_.pitch_min_rad, std::min(gains_.pitch_max_rad, pitch_max_rad));
   return pitch_command_rad_;
 }

@@ -2,6 +2,10 @@
 
 #include "common/csv/csv_reader.hpp"
 #include "common/navdb/ils_row.hpp"
+#include "common/units/units.hpp"
+#include "nav/model/radio/approach_geometry.hpp"
+
+#include <GeographicLib/Geodesic.hpp>
 
 #include <cctype>
 #include <stdexcept>
@@ -46,6 +50,25 @@ nav::IlsApproach load_ils_approach(const std::string& ils_csv_path, const Runway
 nav::IlsApproach load_default_ils_approach(const std::string& airport, const std::string& runway) {
   return load_ils_approach(std::string(FEDSIM_DATA_DIR) + "/nav/ils.csv", RunwayTable::load_default(),
                            airport, runway);
+}
+
+nav::IlsApproach with_course_through_threshold(const nav::IlsApproach& approach,
+                                               double* misalignment_at_threshold_m) {
+  if (misalignment_at_threshold_m != nullptr) {
+    const nav::ApproachGeometry g = nav::approach_geometry(approach);
+    *misalignment_at_threshold_m =
+        nav::course_coordinates(approach, g, approach.threshold.lat_rad, approach.threshold.lon_rad).left_m;
+  }
+  double distance_m = 0.0, azimuth_at_threshold_deg = 0.0, azimuth_at_antenna_deg = 0.0;
+  GeographicLib::Geodesic::WGS84().Inverse(
+      approach.threshold.lat_rad * units::kRadToDeg, approach.threshold.lon_rad * units::kRadToDeg,
+      approach.localizer.lat_rad * units::kRadToDeg, approach.localizer.lon_rad * units::kRadToDeg, distance_m,
+      azimuth_at_threshold_deg, azimuth_at_antenna_deg);
+  nav::IlsApproach aligned = approach;
+  double course = azimuth_at_antenna_deg * units::kDegToRad;
+  if (course < 0.0) course += units::kTwoPi;
+  aligned.course_true_rad = course;
+  return aligned;
 }
 
 }  // namespace fedsim::flight::afcs

@@ -60,6 +60,7 @@ AfcsAircraftState afcs_aircraft_state(const AircraftOutputs& o, const AircraftPa
   a.radio_height_m = main_gear_height_m(o, pack, gear);
   a.angle_of_attack_rad = o.alpha_rad;
   a.sideslip_rad = o.beta_rad;
+  a.lateral_specific_force_mps2 = o.specific_force_cg_body_mps2.y();
   const Eigen::Vector3d accel_ned = o.ned_from_body * o.acceleration_body_mps2;
   a.longitudinal_acceleration_mps2 =
       a.ground_speed_mps > 0.1 ? accel_ned.head<2>().dot(v_horizontal) / a.ground_speed_mps : 0.0;
@@ -70,6 +71,7 @@ AfcsAircraftState afcs_aircraft_state(const AircraftOutputs& o, const AircraftPa
   a.aileron = c.aileron;
   a.rudder = c.rudder;
   a.throttle = c.throttle[0];
+  a.pitch_trim = std::clamp(o.pitch_trim_norm, -1.0, 1.0);
   return a;
 }
 

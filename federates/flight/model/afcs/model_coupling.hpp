@@ -37,8 +37,8 @@ struct GearGeometry {
 double main_gear_height_m(const AircraftOutputs& outputs, const AircraftPack& pack,
                           const GearGeometry& gear);
 
-/// The AFCS aircraft port: attitude, rates (relative to the earth), air data, the ground track
-/// and its acceleration, altitude (the geodetic height: the flat-earth model's MSL), radio height,
+/// The AFCS aircraft port: attitude, rates (relative to the earth), air data, the lateral
+/// specific force at the CG, the ground track and its acceleration, altitude (the geodetic height: the flat-earth model's MSL), radio height,
 /// weight on wheels and the pilot's present primary commands.
 AfcsAircraftState afcs_aircraft_state(const AircraftOutputs& outputs, const AircraftPack& pack,
                                       const GearGeometry& gear, const AircraftControls& pilot);

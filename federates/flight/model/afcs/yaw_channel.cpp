@@ -20,7 +20,7 @@ control::PidParameters pi(double kp, double ki) {
 YawChannel::YawChannel(const YawChannelGains& gains, double dt_s)
     : gains_(gains),
       coordination_(pi(gains.sideslip_gain_per_rad, gains.sideslip_integral_gain_per_rad_s), dt_s),
-      align_(pi(gains.align_heading_gain_per_rad, gains.align_heading_gain_per_rad * 0.4), dt_s),
+      align_(pi(gains.align_heading_gain_per_rad, gains.align_heading_integral_per_rad_s), dt_s),
       dt_s_(dt_s) {}
 
 void YawChannel::engage_coordination(double rudder, double sideslip_rad) {
