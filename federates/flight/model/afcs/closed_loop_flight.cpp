@@ -47,6 +47,7 @@ TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double head
   transitions_.clear();
   history_.clear();
   touchdown_.reset();
+  max_rollout_offset_m_ = 0.0;
   pending_ = McpButtons{};
   mcp_.heading_true_rad = heading_true_rad;
   mcp_.altitude_m = point.altitude_m;
@@ -155,6 +156,8 @@ void ClosedLoopFlight::record(const AfcsInputs& in, const AfcsOutputs& out, cons
   if (!touchdown_ && s.main_gear_on_ground && before.time_s > 0.0 && !before.main_gear_on_ground) {
     Touchdown t;
     t.time_s = s.time_s;
+    t.lat_rad = o.geodetic.lat_rad;
+    t.lon_rad = o.geodetic.lon_rad;
     t.beyond_threshold_m = -s.before_threshold_m;
     t.left_of_course_m = s.left_of_course_m;
     t.sink_rate_mps = std::max(-before.vertical_speed_mps, -s.vertical_speed_mps);
@@ -165,6 +168,7 @@ void ClosedLoopFlight::record(const AfcsInputs& in, const AfcsOutputs& out, cons
     t.ground_speed_mps = s.ground_speed_mps;
     touchdown_ = t;
   }
+  if (touchdown_) max_rollout_offset_m_ = std::max(max_rollout_offset_m_, std::abs(s.left_of_course_m));
   sample_ = s;
   if (recording_) history_.push_back(s);
 }

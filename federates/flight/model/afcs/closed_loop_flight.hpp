@@ -50,6 +50,7 @@ struct FlightSample {
 /// The first main-gear contact.
 struct Touchdown {
   double time_s = 0.0;
+  double lat_rad = 0.0, lon_rad = 0.0;  // CG position [rad]
   double beyond_threshold_m = 0.0;   // along the course [m]
   double left_of_course_m = 0.0;     // [m]
   double sink_rate_mps = 0.0;        // CG descent rate at contact [m/s], + down
@@ -102,7 +103,10 @@ class ClosedLoopFlight {
   const std::vector<FlightSample>& history() const { return history_; }
   const std::vector<ModeTransition>& transitions() const { return transitions_; }
   const std::optional<Touchdown>& touchdown() const { return touchdown_; }
+  /// The largest distance from the course line on the ground after the touchdown [m].
+  double max_rollout_offset_m() const { return max_rollout_offset_m_; }
   AircraftModel& model() { return *model_; }
+  const AircraftModel& model() const { return *model_; }
   Afcs& afcs() { return *afcs_; }
   const nav::IlsApproach& approach() const { return approach_; }
   const nav::ApproachGeometry& geometry() const { return geometry_; }
@@ -132,6 +136,7 @@ class ClosedLoopFlight {
   FlightSample sample_;
   std::vector<FlightSample> history_;
   std::optional<Touchdown> touchdown_;
+  double max_rollout_offset_m_ = 0.0;
   bool recording_ = true;
   bool localizer_off_air_ = false;
   bool glide_slope_off_air_ = false;
