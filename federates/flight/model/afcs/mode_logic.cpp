@@ -120,9 +120,8 @@ void ModeLogic::protect(const ModeConditions& c) {
     }
     set_lateral(c.on_ground ? LateralMode::kNone : LateralMode::kHeadingHold, "localizer flagged");
   }
-  if (state_.lateral_armed.localizer && !c.localizer_valid) {
-    // An armed mode waits: it cannot capture a flagged signal (no alert: not flown yet).
-  }
+  // An armed localizer or glide slope waits while flagged: automatic_*() capture only a valid
+  // signal (no alert: it is not flown yet).
   if (state_.vertical == VerticalMode::kGlideSlope && !c.glide_slope_valid) {
     raise(kAlertGlideSlopeInvalid, "glide slope flagged");
     if (state_.autopilot_engaged) {
