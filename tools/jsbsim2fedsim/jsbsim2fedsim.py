@@ -44,7 +44,8 @@ def xyz_text(location, default_unit="IN"):
 
 
 class Converter:
-    def __init__(self, aircraft_path, engine_dir, notes):
+    def __init__(self, aircraft_path, engine_dir, notes, pitch_trim=None):
+        self.pitch_trim = pitch_trim  # (kind, rate_per_s) or None: no trim system in the pack
         self.root = jx.parse(aircraft_path)
         self.engine_dir = engine_dir
         self.notes = notes
@@ -174,9 +175,17 @@ class Converter:
                 continue
             prop = written
             k = self._unit_factor(prop)
-            s = self.fcs.surface(prop, command, sign, self.notes)
+            damper = self.fcs.yaw_damper(prop, command, sign, self.notes) if surface == "rudder" else None
+            translated = (jsbsim_fcs.YAW_RATE,) if damper else ()
+            s = self.fcs.surface(prop, command, sign, self.notes, translated)
             self.surfaces[surface] = (prop, s, k)
             out[surface] = self._surface_entry(s, k)
+            if damper:
+                out["yaw_damper"] = self._yaw_damper_entry(damper)
+        if self.pitch_trim and "elevator" in out:
+            kind, rate = self.pitch_trim
+            out["pitch_trim"] = {"kind": kind, "rate_per_s": Commented(
+                rate, "fedsim's figure (--pitch-trim): JSBSim files give no trim rate")}
         for surface, prop_candidates in (("flaps", ["fcs/flap-pos-deg", "fcs/flap-pos-rad", "fcs/flap-pos-norm"]),
                                          ("speedbrake", ["fcs/speedbrake-pos-norm"]),
                                          ("spoilers", ["fcs/spoiler-pos-norm"])):
@@ -186,6 +195,17 @@ class Converter:
                 if entry:
                     out[surface] = entry
         return out
+
+    def _yaw_damper_entry(self, damper):
+        """fedsim's yaw_damper section: JSBSim's chain of gains on the air-relative yaw rate,
+        sampled at its Mach breakpoints (no washout: JSBSim's chain has none; a filter on the
+        path is not translated)."""
+        self.notes.append("yaw damper (%s on %s) translated as flight_controls.yaw_damper, its "
+                          "gain sampled at the Mach breakpoints of its schedules" %
+                          (", ".join("'%s'" % n for n in damper["components"]), jsbsim_fcs.YAW_RATE))
+        return {"gain_per_radps": {"row": "mach", "row_breakpoints": damper["mach"],
+                                   "values": [g if abs(g) > 1e-12 else 0.0 for g in damper["gain_per_radps"]]},
+                "engaged_at_start": True}
 
     def _aileron_candidates(self):
         """The fcs property the aerodynamics read for roll control: any aero-used fcs property
@@ -536,7 +556,23 @@ def main(argv=None):
     parser.add_argument("--name", help="pack name (default: the aircraft file's name attribute)")
     parser.add_argument("--calibration", help="calibration overlay to merge (e.g. "
                         "data/aircraft/c172.calibration.yaml; its 'pack' must name the output)")
+    parser.add_argument("--pitch-trim", metavar="KIND:RATE",
+                        help="a pitch trim with a trim rate (JSBSim gives none): 'stabiliser' or "
+                             "'tab', and the rate in normalised trim travel per second, e.g. "
+                             "stabiliser:0.03")
     args = parser.parse_args(argv)
+    pitch_trim = None
+    if args.pitch_trim:
+        try:
+            kind, rate_text = args.pitch_trim.split(":")
+            rate = float(rate_text)
+            if kind not in ("stabiliser", "tab") or not (0.0 < rate <= 10.0):
+                raise ValueError
+        except ValueError:
+            print("jsbsim2fedsim: --pitch-trim must be stabiliser:RATE or tab:RATE with 0 < RATE <= 10 "
+                  "(got %r)" % args.pitch_trim, file=sys.stderr)
+            return 1
+        pitch_trim = (kind, rate)
     overlay = None
     if args.calibration:
         try:
@@ -548,7 +584,7 @@ def main(argv=None):
     root_dir = args.jsbsim_root or os.path.join(os.path.dirname(args.aircraft), "..", "..")
     engine_dir = args.engine_dir or os.path.join(root_dir, "engine")
     notes = []
-    conv = Converter(args.aircraft, engine_dir, notes)
+    conv = Converter(args.aircraft, engine_dir, notes, pitch_trim)
     sections = {}
     sections["fedsim_aircraft_pack"] = 1
     sections["metadata"] = None  # filled last, once every file read is known

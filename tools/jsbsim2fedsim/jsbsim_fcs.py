@@ -12,6 +12,13 @@ import jsbsim_xml as jx
 SUPPORTED = ("summer", "pure_gain", "scheduled_gain", "aerosurface_scale", "actuator",
              "kinematic", "fcs_function")
 
+# The body yaw rate a yaw damper feeds back (relative to the air mass) and the Mach number its
+# gain is scheduled on.
+YAW_RATE = "velocities/r-aero-rad_sec"
+MACH = "velocities/mach"
+# Components a static yaw-damper gain can pass through: gains and sums (no filters).
+STATIC_GAINS = ("summer", "pure_gain", "scheduled_gain", "aerosurface_scale")
+
 
 def _number_or_none(element, tag):
     child = element.find(tag)
@@ -156,9 +163,57 @@ class StaticFcs:
             todo.extend(c.inputs)
         return order
 
-    def surface(self, prop, command_prop, command_sign, notes):
+    def traces_to(self, component, prop, seen=None):
+        """True when `component`'s inputs lead (through other components) to `prop`."""
+        seen = set() if seen is None else seen
+        if id(component) in seen:
+            return False
+        seen.add(id(component))
+        for name in (i.lstrip("-") for i in component.inputs):
+            if name == prop:
+                return True
+            c = self.producer.get(name)
+            if c is not None and self.traces_to(c, prop, seen):
+                return True
+        return False
+
+    def yaw_damper(self, prop, command_prop, command_sign, notes):
+        """The yaw damper feeding `prop` (the rudder position) from the body yaw rate, as a
+        fedsim gain table: normalised rudder command per rad/s against Mach, at the Mach
+        breakpoints of the schedules on its path. None when the chain has no yaw-rate input, or
+        when the path holds anything but static gains and sums (filters are not translated)."""
+        path = [c for c in self.upstream(prop) if self.traces_to(c, YAW_RATE)]
+        if not path:
+            return None
+        if any(c.type not in STATIC_GAINS for c in path):
+            notes.append("%s: the yaw damper path holds %s: not translated" %
+                         (prop, ", ".join("<%s> '%s'" % (c.type, c.name) for c in path
+                                          if c.type not in STATIC_GAINS)))
+            return None
+        machs = set()
+        for c in path:
+            if c.type == "scheduled_gain":
+                table = jx.JsbTable(c.element.find("table"))
+                if table.dimensions != 1 or table.variables.get("row") != MACH:
+                    notes.append("%s: yaw damper gain '%s' is scheduled on %s: not translated" %
+                                 (prop, c.name, table.variables))
+                    return None
+                machs.update(table.rows)
+        machs = sorted(machs) or [0.0, 1.0]
+        full = self.run({command_prop: command_sign * 1.0}, False)[prop]
+        rate = 1e-3  # rad/s: small, the chain is linear in it
+        gains = []
+        for m in machs:
+            moved = self.run({command_prop: 0.0, YAW_RATE: rate, MACH: m}, False)[prop]
+            rest = self.run({command_prop: 0.0, YAW_RATE: 0.0, MACH: m}, False)[prop]
+            gains.append((moved - rest) / full / rate)
+        return {"mach": machs, "gain_per_radps": gains,
+                "components": [c.name for c in path if c.type in ("pure_gain", "scheduled_gain")]}
+
+    def surface(self, prop, command_prop, command_sign, notes, translated=()):
         """Travel, clip and dynamics of property `prop` driven by `command_prop`; a fedsim
-        command c sets the JSBSim command to command_sign * c."""
+        command c sets the JSBSim command to command_sign * c. Components fed by one of the
+        `translated` properties (a yaw damper on the yaw rate) are not reported as left out."""
         def value(c, clip):
             return self.run({command_prop: command_sign * c}, clip)[prop]
 
@@ -170,7 +225,7 @@ class StaticFcs:
                              "+-1 only" % (prop, command_prop))
                 break
         clipped_plus, clipped_minus = value(1.0, True), value(-1.0, True)
-        self._note_outside_inputs(prop, command_prop, notes)
+        self._note_outside_inputs(prop, command_prop, notes, translated)
         actuators = [c for c in self.upstream(prop) if c.type == "actuator"]
         rate, lag = 0.0, 0.0
         for act in actuators:
@@ -188,17 +243,22 @@ class StaticFcs:
                 "clip_min": min(clipped_plus, clipped_minus), "rate": rate, "lag": lag,
                 "actuators": [a.name for a in actuators]}
 
-    def _note_outside_inputs(self, prop, command_prop, notes):
+    def _note_outside_inputs(self, prop, command_prop, notes, translated=()):
         """Inputs of the chain other than pilot commands and trims (autopilot outputs, yaw
-        dampers fed by body rates...) are feedback laws the pack cannot carry."""
+        dampers fed by body rates...) are feedback laws the pack cannot carry, unless
+        translated (the yaw damper)."""
+        def carried(c):
+            return any(self.traces_to(c, t) for t in translated)
         for c in self.upstream(prop):
+            if carried(c):
+                continue
             for name in (i.lstrip("-") for i in c.inputs):
                 pilot = name == command_prop or (name.startswith("fcs/") and name.endswith("-cmd-norm"))
                 if name not in self.producer and not pilot:
                     notes.append("%s: input %s of FCS %s '%s' is not translated (read as 0)" %
                                  (prop, name, c.type, c.name))
         for c in self.upstream(prop):
-            if c.type == "scheduled_gain":
+            if c.type == "scheduled_gain" and not carried(c):
                 notes.append("%s: scheduled gain '%s' (%s) is not translated" %
                              (prop, c.name, ", ".join(c.inputs)))
 

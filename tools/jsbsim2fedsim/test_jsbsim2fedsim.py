@@ -4,6 +4,8 @@
 Run: python3 -m unittest discover -s tools/jsbsim2fedsim -p 'test_*.py'
 """
 
+import contextlib
+import io
 import math
 import os
 import sys
@@ -122,13 +124,30 @@ AIRCRAFT = """<?xml version="1.0"?>
 """
 
 
-def convert():
+# The test aircraft's rudder with the JSBSim 737's yaw-damper chain: a Mach-scheduled gain on
+# the air-relative yaw rate summed into the rudder command.
+YAW_DAMPER_RUDDER = """    <channel name="Yaw">
+      <scheduled_gain name="Yaw Damper"> <input> velocities/r-aero-rad_sec </input>
+        <table> <independentVar> velocities/mach </independentVar>
+          <tableData> 0.0 0.0
+                      0.2 2.0 </tableData> </table> </scheduled_gain>
+      <summer name="Rudder Sum"> <input> fcs/rudder-cmd-norm </input> <input> fcs/yaw-damper </input>
+        <clipto> <min> -1 </min> <max> 1 </max> </clipto> </summer>
+      <aerosurface_scale name="Rudder Control"> <input> fcs/rudder-sum </input>
+        <range> <min> -20 </min> <max> 20 </max> </range> <gain> 0.0174533 </gain>
+        <output> fcs/rudder-pos-rad </output> </aerosurface_scale>
+    </channel>"""
+PLAIN_RUDDER = AIRCRAFT[AIRCRAFT.index('    <channel name="Yaw">'):AIRCRAFT.index('    <channel name="Flaps">')].rstrip("\n")
+
+
+def convert(aircraft=None, pitch_trim=None):
+    aircraft = AIRCRAFT if aircraft is None else aircraft
     notes = []
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "testplane.xml")
         with open(path, "w") as f:
-            f.write(AIRCRAFT)
-        conv = jsbsim2fedsim.Converter(path, d, notes)
+            f.write(aircraft)
+        conv = jsbsim2fedsim.Converter(path, d, notes, pitch_trim)
         sections = {"geometry": conv.geometry(), "mass": conv.mass(),
                     "flight_controls": conv.flight_controls(), "aerodynamics": conv.aerodynamics(),
                     "landing_gear": conv.landing_gear(), "limits": conv.limits()}
@@ -459,6 +478,52 @@ class PropellerAndCalibrationTest(unittest.TestCase):
             # The factors are identified from the handbook; the band is a stated choice.
             self.assertIn("stated choice" if s["key"].startswith("factor_fade")
                           else "Pilot's Operating Handbook", s["source"])
+
+
+class FlightControlSystemTest(unittest.TestCase):
+    def test_yaw_damper_chain_becomes_the_pack_yaw_damper(self):
+        sections, notes, _ = convert(AIRCRAFT.replace(PLAIN_RUDDER, YAW_DAMPER_RUDDER))
+        fc = plain(sections)["flight_controls"]
+        yd = fc["yaw_damper"]["gain_per_radps"]
+        self.assertEqual(yd["row"], "mach")
+        self.assertEqual(yd["row_breakpoints"], [0.0, 0.2])
+        # JSBSim rudder +2 per rad/s of yaw rate is fedsim rudder -2 (the rudder command's sign
+        # is flipped): a yaw rate to the right gives left rudder, it damps.
+        self.assertAlmostEqual(yd["values"][0], 0.0, places=9)
+        self.assertAlmostEqual(yd["values"][1], -2.0, places=6)
+        self.assertTrue(fc["yaw_damper"]["engaged_at_start"])
+        self.assertFalse(any("not translated" in n and "Yaw Damper" in n for n in notes), notes)
+        self.assertTrue(any("translated as flight_controls.yaw_damper" in n for n in notes))
+        # The travel is unchanged by the damper.
+        self.assertAlmostEqual(fc["rudder"]["deflection_at_plus_one_deg"], -20 * 0.0174533 * 180 / math.pi, places=6)
+
+    def test_a_filter_on_the_damper_path_is_not_translated(self):
+        filtered = YAW_DAMPER_RUDDER.replace(
+            '<summer name="Rudder Sum">',
+            '<lag_filter name="YD Filter"> <input> fcs/yaw-damper </input> <c1> 2 </c1> </lag_filter>\n'
+            '      <summer name="Rudder Sum">').replace(
+            "<input> fcs/yaw-damper </input>\n        <clipto>", "<input> fcs/yd-filter </input>\n        <clipto>")
+        sections, notes, _ = convert(AIRCRAFT.replace(PLAIN_RUDDER, filtered))
+        self.assertNotIn("yaw_damper", plain(sections)["flight_controls"])
+        self.assertTrue(any("yaw damper path holds <lag_filter>" in n for n in notes), notes)
+
+    def test_no_damper_without_a_yaw_rate_input(self):
+        sections, _, _ = convert()
+        self.assertNotIn("yaw_damper", plain(sections)["flight_controls"])
+        self.assertNotIn("pitch_trim", plain(sections)["flight_controls"])
+
+    def test_pitch_trim_option(self):
+        sections, _, _ = convert(pitch_trim=("tab", 0.4))
+        t = plain(sections)["flight_controls"]["pitch_trim"]
+        self.assertEqual(t, {"kind": "tab", "rate_per_s": 0.4})
+
+    def test_pitch_trim_option_is_checked(self):
+        for bad in ("wing:0.1", "tab:0", "tab:x", "tab", "stabiliser:11"):
+            with tempfile.TemporaryDirectory() as d:
+                with contextlib.redirect_stderr(io.StringIO()) as err:
+                    rc = jsbsim2fedsim.main(["x.xml", "-o", os.path.join(d, "x.yaml"), "--pitch-trim", bad])
+            self.assertEqual(rc, 1, bad)
+            self.assertIn("--pitch-trim", err.getvalue())
 
 
 if __name__ == "__main__":

@@ -154,6 +154,23 @@ void AircraftModel::build_systems() {
   }
   if (fc.speedbrake) s[Surface::kSpeedbrake].emplace(kinematic_actuator_params(*fc.speedbrake));
   if (fc.spoilers) s[Surface::kSpoilers].emplace(kinematic_actuator_params(*fc.spoilers));
+  if (fc.pitch_trim) {
+    Actuator::Params trim;  // the trim's normalised travel, at the trim rate
+    trim.deflection_at_plus_one_rad = 1.0;
+    trim.deflection_at_minus_one_rad = -1.0;
+    trim.position_min_rad = -1.0;
+    trim.position_max_rad = 1.0;
+    trim.rate_limit_radps = fc.pitch_trim->rate_per_s;
+    s.pitch_trim.emplace(trim);
+  }
+  if (fc.yaw_damper) {
+    YawDamper::Params damper;
+    damper.gain_per_radps = fc.yaw_damper->gain_per_radps;
+    damper.washout_time_constant_s = fc.yaw_damper->washout_time_constant_s;
+    damper.authority = fc.yaw_damper->authority;
+    s.yaw_damper.emplace(damper);
+    s.yaw_damper_engaged = fc.yaw_damper->engaged_at_start;
+  }
   s.retractable_gear = any_retractable(pack_.landing_gear);
   if (s.retractable_gear) {
     Actuator::Params gear;
@@ -218,6 +235,8 @@ void AircraftModel::reset(const AircraftInitialConditions& initial) {
   }
   aerodynamics_.reset();
   if (turbulence_) turbulence_->reset();
+  const FlightControlsSpec& fc = pack_.flight_controls;
+  surfaces_->yaw_damper_engaged = fc.yaw_damper && fc.yaw_damper->engaged_at_start;
   place_surfaces();
   set_state(initial);
   if (initial.settle_engines) settle_systems();
@@ -366,10 +385,28 @@ void AircraftModel::set_state(const AircraftInitialConditions& state) {
 
 void AircraftModel::place_surfaces() {
   Surfaces& s = *surfaces_;
+  if (s.pitch_trim) s.pitch_trim->reset(s.pitch_trim->demand_for(controls_.elevator_trim));
+  if (s.yaw_damper) {
+    const Evaluation& e = *current_;
+    s.yaw_damper->reset(yaw_rate_for_damper(e), e.mach, s.yaw_damper_engaged);
+  }
   for (Surface surface : Surfaces::kAll) {
-    place_actuator(s[surface], Surfaces::command(surface, controls_));
+    place_actuator(s[surface], s.command(surface, controls_));
   }
 }
+
+double AircraftModel::yaw_rate_for_damper(const Evaluation& e) const {
+  // The body yaw rate relative to the air mass (JSBSim's velocities/r-aero-rad_sec).
+  return e.omega_wrt_earth_body.z() - e.gust_rates_body_radps.z();
+}
+
+void AircraftModel::set_yaw_damper_engaged(bool engaged) {
+  Surfaces& s = *surfaces_;
+  if (!s.yaw_damper || s.yaw_damper_engaged == engaged) return;
+  s.yaw_damper_engaged = engaged;
+}
+
+bool AircraftModel::yaw_damper_engaged() const { return surfaces_->yaw_damper && surfaces_->yaw_damper_engaged; }
 
 void AircraftModel::settle_systems() {
   place_surfaces();
@@ -623,11 +660,16 @@ void AircraftModel::advance_systems(double dt_s) {
           gusts_active_ = true;
         }
         break;
-      case Stage::kFlightControls:
-        for (Surface surface : Surfaces::kAll) {
-          step_actuator((*surfaces_)[surface], dt_s, Surfaces::command(surface, controls_));
+      case Stage::kFlightControls: {
+        // The trim and the yaw damper first: the elevator and rudder commands include them.
+        Surfaces& s = *surfaces_;
+        if (s.pitch_trim) s.pitch_trim->step(dt_s, Actuator::Inputs{controls_.elevator_trim});
+        if (s.yaw_damper) {
+          s.yaw_damper->step(dt_s, YawDamper::Inputs{yaw_rate_for_damper(e), e.mach, s.yaw_damper_engaged});
         }
+        for (Surface surface : Surfaces::kAll) step_actuator(s[surface], dt_s, s.command(surface, controls_));
         break;
+      }
       case Stage::kPropulsion:
         advance_engines(dt_s);
         break;

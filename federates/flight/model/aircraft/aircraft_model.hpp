@@ -130,6 +130,10 @@ class AircraftModel {
   /// tanks, mass, CG and inertia stay as they are.
   void set_fuel_frozen(bool frozen) { fuel_frozen_ = frozen; }
   bool fuel_frozen() const { return fuel_frozen_; }
+  /// Engages or disengages the pack's yaw damper (no effect without one). A reset engages it
+  /// again if the pack says engaged_at_start.
+  void set_yaw_damper_engaged(bool engaged);
+  bool yaw_damper_engaged() const;
   /// Moves the terrain plane (m above MSL).
   void set_runway_elevation_m(double elevation_m);
   double runway_elevation_m() const { return runway_elevation_m_; }
@@ -169,6 +173,7 @@ class AircraftModel {
 
   void build_systems();
   void place_surfaces();
+  double yaw_rate_for_damper(const Evaluation& e) const;
   /// The force chain (executive steps 1-8) at a state; update_hysteresis for the present
   /// state only (trial states of the integrator hold the stall flag).
   void evaluate(const RigidBodyState& state, Evaluation& eval, bool update_hysteresis);

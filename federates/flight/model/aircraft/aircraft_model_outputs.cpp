@@ -75,6 +75,9 @@ void AircraftModel::fill_outputs() {
   o.speedbrake_norm = s.position(Surface::kSpeedbrake);
   o.spoiler_norm = s.position(Surface::kSpoilers);
   o.gear_norm = s.retractable_gear ? s.position(Surface::kGear) : 1.0;
+  o.pitch_trim_norm = s.trim_position(controls_);
+  o.yaw_damper_engaged = s.yaw_damper && s.yaw_damper_engaged;
+  o.yaw_damper_rudder = s.yaw_damper ? s.yaw_damper->outputs().rudder_command : 0.0;
 
   o.aero = e.aero;
   o.aero_force_body_n = e.aero_force_body;

@@ -4,9 +4,12 @@
 
 #include "flight/model/aircraft/aircraft_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
+
+#include "flight/model/systems/yaw_damper.hpp"
 
 namespace fedsim::flight {
 
@@ -31,11 +34,17 @@ struct AircraftModel::Surfaces {
                                                   Surface::kSpeedbrake, Surface::kSpoilers,
                                                   Surface::kGear};
   /// The command an actuator follows (the gear: 0 up .. 1 down, at the pack's transit rate).
-  static double command(Surface surface, const AircraftControls& c) {
+  /// The elevator takes the pilot's elevator plus the pitch trim's present position (with a
+  /// pitch-trim system; else the trim command itself), the rudder the pilot's rudder, its trim
+  /// and the yaw damper's command, each sum clipped to -1..1 (JSBSim's "Pitch Trim Sum" and
+  /// "Rudder Sum").
+  double command(Surface surface, const AircraftControls& c) const {
     switch (surface) {
-      case Surface::kElevator: return c.elevator_command();
+      case Surface::kElevator: return std::clamp(c.elevator + trim_position(c), -1.0, 1.0);
       case Surface::kAileron: return c.aileron_command();
-      case Surface::kRudder: return c.rudder_command();
+      case Surface::kRudder:
+        return std::clamp(c.rudder + c.rudder_trim + (yaw_damper ? yaw_damper->outputs().rudder_command : 0.0),
+                          -1.0, 1.0);
       case Surface::kFlaps: return c.flaps;
       case Surface::kSpeedbrake: return c.speedbrake;
       case Surface::kSpoilers: return c.spoilers;
@@ -51,7 +60,15 @@ struct AircraftModel::Surfaces {
     const auto& a = actuators[static_cast<std::size_t>(surface)];
     return a ? a->outputs().position_rad : 0.0;
   }
+  /// The pitch trim's position (normalised -1..1): the trim actuator's, or the command itself
+  /// when the pack has no trim system.
+  double trim_position(const AircraftControls& c) const {
+    return pitch_trim ? pitch_trim->outputs().position_rad : c.elevator_trim;
+  }
   std::array<std::optional<Actuator>, kAll.size()> actuators;
+  std::optional<Actuator> pitch_trim;  // normalised position, moving at the trim rate
+  std::optional<YawDamper> yaw_damper;
+  bool yaw_damper_engaged = false;
   bool retractable_gear = false;
   double flap_position_at_full = 1.0;  // actuator position at flap command 1 (rad or 1)
   double flap_full_travel_rad = 0.0;

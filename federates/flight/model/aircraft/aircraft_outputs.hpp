@@ -106,6 +106,11 @@ struct AircraftOutputs {
   double speedbrake_norm = 0.0;
   double spoiler_norm = 0.0;
   double gear_norm = 0.0;  ///< 0 up, 1 down and locked
+  /// Pitch trim position, -1..1 in the elevator's sense (the trim actuator's with a pack
+  /// pitch_trim system, else the trim command).
+  double pitch_trim_norm = 0.0;
+  bool yaw_damper_engaged = false;
+  double yaw_damper_rudder = 0.0;  ///< the yaw damper's rudder command (normalised, + nose right)
 
   // Forces and moments (body axes; moments about the CG; gravity excluded).
   Aerodynamics::Outputs aero;  ///< coefficients; its moment_body is about the aero RP

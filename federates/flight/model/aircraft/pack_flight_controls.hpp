@@ -4,6 +4,8 @@
 #include <optional>
 #include <vector>
 
+#include "common/math/interpolation.hpp"
+
 namespace fedsim::flight {
 
 /// A surface driven by a normalised command in -1..1 (elevator, aileron, rudder). The command
@@ -34,6 +36,27 @@ struct KinematicSurfaceSpec {
   double full_travel_rad = 0.0;         // deflection at position 1 (flaps; 0 if not stated)
 };
 
+/// The yaw damper (model/systems/yaw_damper.hpp): rudder command = K(Mach) x washout(r), r the
+/// body yaw rate relative to the air mass. On at the start of a run unless engaged_at_start is
+/// false (the instructor or the aircraft's switch can change it: AircraftModel::set_yaw_damper_engaged).
+struct YawDamperSpec {
+  Table1D gain_per_radps;                // normalised rudder per rad/s against Mach (< 0 damps)
+  double washout_time_constant_s = 0.0;  // 0: no washout
+  double authority = 1.0;                // |damper command| limit, (0, 1]
+  bool engaged_at_start = true;
+};
+
+/// Pitch trim with a trim rate: AircraftControls::elevator_trim is the position the trim is
+/// driven to; the trim moves there at rate_per_s (normalised trim travel, -1..1, per second).
+/// Its position adds to the elevator command before the elevator's clip (JSBSim's
+/// "Pitch Trim Sum", the way the source data of both packs model the trim). `kind` records
+/// what moves: the 737's trimmable horizontal stabiliser or the C172's elevator trim tab.
+enum class PitchTrimKind { kStabiliser, kTab };
+struct PitchTrimSpec {
+  PitchTrimKind kind = PitchTrimKind::kStabiliser;
+  double rate_per_s = 0.0;  // > 0
+};
+
 /// All surfaces the pack defines; a missing surface is absent (the NASA sphere has none).
 struct FlightControlsSpec {
   std::optional<SurfaceActuatorSpec> elevator;
@@ -42,6 +65,8 @@ struct FlightControlsSpec {
   std::optional<KinematicSurfaceSpec> flaps;
   std::optional<KinematicSurfaceSpec> speedbrake;
   std::optional<KinematicSurfaceSpec> spoilers;
+  std::optional<YawDamperSpec> yaw_damper;    // absent: no yaw damper
+  std::optional<PitchTrimSpec> pitch_trim;    // absent: the trim follows its command at once
 };
 
 }  // namespace fedsim::flight

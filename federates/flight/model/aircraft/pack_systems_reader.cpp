@@ -260,11 +260,35 @@ GearContactSpec read_contact(const ConfigNode& node) {
   return c;
 }
 
+YawDamperSpec read_yaw_damper(const ConfigNode& node) {
+  node.reject_unknown_keys({"gain_per_radps", "washout_time_constant_s", "authority", "engaged_at_start"});
+  YawDamperSpec y;
+  y.gain_per_radps = read_table_1d(node, "gain_per_radps", "mach");
+  for (double k : y.gain_per_radps.values()) {
+    if (!(std::abs(k) <= 100.0)) node.fail_at("gain_per_radps", "gains must be finite, |K| <= 100 per rad/s");
+  }
+  y.washout_time_constant_s = node.number_or("washout_time_constant_s", 0.0, 0.0, 100.0);
+  y.authority = node.number_or("authority", 1.0, 0.0, 1.0);
+  if (!(y.authority > 0.0)) node.fail_at("authority", "must be positive");
+  y.engaged_at_start = node.boolean_or("engaged_at_start", true);
+  return y;
+}
+
+PitchTrimSpec read_pitch_trim(const ConfigNode& node) {
+  node.reject_unknown_keys({"kind", "rate_per_s"});
+  PitchTrimSpec t;
+  t.kind = node.choice("kind", {"stabiliser", "tab"}) == "stabiliser" ? PitchTrimKind::kStabiliser
+                                                                      : PitchTrimKind::kTab;
+  t.rate_per_s = node.number("rate_per_s", 0.0, 10.0);
+  if (!(t.rate_per_s > 0.0)) node.fail_at("rate_per_s", "must be positive");
+  return t;
+}
+
 }  // namespace
 
 FlightControlsSpec read_flight_controls(const ConfigNode& section) {
   section.reject_unknown_keys({"elevator", "aileron", "rudder", "flaps", "speedbrake",
-                               "spoilers"});
+                               "spoilers", "yaw_damper", "pitch_trim"});
   FlightControlsSpec out;
   out.elevator = surface_if(section, "elevator");
   out.aileron = surface_if(section, "aileron");
@@ -272,6 +296,14 @@ FlightControlsSpec read_flight_controls(const ConfigNode& section) {
   out.flaps = kinematic_if(section, "flaps", true);
   out.speedbrake = kinematic_if(section, "speedbrake", false);
   out.spoilers = kinematic_if(section, "spoilers", false);
+  if (section.has("yaw_damper")) {
+    if (!out.rudder) section.fail_at("yaw_damper", "a yaw damper needs a rudder");
+    out.yaw_damper = read_yaw_damper(section.child("yaw_damper"));
+  }
+  if (section.has("pitch_trim")) {
+    if (!out.elevator) section.fail_at("pitch_trim", "a pitch trim needs an elevator");
+    out.pitch_trim = read_pitch_trim(section.child("pitch_trim"));
+  }
   return out;
 }
 
