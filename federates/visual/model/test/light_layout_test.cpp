@@ -118,7 +118,7 @@ TEST(RunwayLights, CentrelineColourCodingTowardsTheStopEnd) {  // 5.3.12.7
   EXPECT_TRUE(centreline_lights(in).empty());
 }
 
-TEST(Papi, SettingsForAThreeDegreePath) {  // 5.3.6: 3d30', 3d10', 2d50', 2d30'
+TEST(PapiLayout, SettingsForAThreeDegreePath) {  // 5.3.6: 3d30', 3d10', 2d50', 2d30'
   EndLightingInput in;
   in.width_m = 45.0;
   in.glide_path_rad = 3.0 * kDegToRad;
