@@ -240,6 +240,10 @@ struct Renderer::Impl {
     const Eigen::Vector3d centre(0.0, 0.0, scene.frame.ground_radius_m());
     environment.set("u_eye_up", (camera.eye_scene_m() - centre).normalized().cast<float>().eval());
     environment.set("u_sun", a.sun_scene);
+    const Eigen::Vector3f up = (camera.eye_scene_m() - centre).normalized().cast<float>();
+    Eigen::Vector3f sun_horizontal = a.sun_scene - a.sun_scene.dot(up) * up;
+    if (sun_horizontal.norm() > 1.0e-4f) sun_horizontal.normalize(); else sun_horizontal.setZero();
+    environment.set("u_sun_horizontal", sun_horizontal);
     environment.set("u_zenith", a.sky.zenith_rgb);
     environment.set("u_horizon", a.sky.horizon_rgb);
     environment.set("u_horizon_sun", a.sky.horizon_sunward_rgb);
@@ -282,6 +286,7 @@ struct Renderer::Impl {
     lights.set("u_threshold_lux", static_cast<float>(a.threshold_lux));
     lights.set("u_papi_red", Eigen::Vector3f(1.0f, 0.1f, 0.08f));
     lights.set("u_red_filter", kRedFilter);
+    lights.set("u_min_size_px", camera.config().samples > 1 ? 2.0f : 1.0f);
     gl.BindVertexArray(light_vao);
     gl.DrawArrays(GL_POINTS, 0, static_cast<GLsizei>(scene.lights.size()));
     gl.Disable(GL_BLEND);

@@ -54,6 +54,7 @@ uniform vec2 u_tan_half;
 uniform vec2 u_viewport;
 uniform vec3 u_eye_up;
 uniform vec3 u_sun;
+uniform vec3 u_sun_horizontal;
 uniform vec3 u_zenith;
 uniform vec3 u_horizon;
 uniform vec3 u_horizon_sun;
@@ -70,14 +71,16 @@ float ray_length(float h0, float s, float bottom, float top) {
 }
 
 vec3 sky(vec3 dir, float s) {
-  vec3 sun_h = u_sun - dot(u_sun, u_eye_up) * u_eye_up;
+  // Towards the sun in azimuth: cosine between the horizontal parts of the ray and the sun
+  // direction (u_sun_horizontal is unit, or zero with the sun overhead).
   vec3 dir_h = dir - s * u_eye_up;
-  float towards = (length(sun_h) > 1.0e-4 && length(dir_h) > 1.0e-4)
-                      ? max(dot(normalize(dir_h), normalize(sun_h)), 0.0) : 0.0;
+  float towards = max(dot(dir_h, u_sun_horizontal), 0.0) * inversesqrt(max(dot(dir_h, dir_h), 1.0e-8));
   vec3 horizon = mix(u_horizon, u_horizon_sun, towards * towards * towards);
   vec3 c = mix(horizon, u_zenith, sqrt(clamp(s, 0.0, 1.0)));
-  float cos_sun = dot(dir, u_sun);
-  c += u_sun_rgb * (smoothstep(0.99997, 0.999989, cos_sun) + 0.2 * pow(max(cos_sun, 0.0), 64.0));
+  float cos_sun = max(dot(dir, u_sun), 0.0);
+  float halo = cos_sun * cos_sun;  // cos^64 by squaring
+  halo *= halo; halo *= halo; halo *= halo; halo *= halo; halo *= halo;
+  c += u_sun_rgb * (smoothstep(0.99997, 0.999989, cos_sun) + 0.2 * halo);
   vec2 tau = vec2(u_sigma_haze * ray_length(u_eye_height, s, -1.0e9, u_haze_top),
                   u_sigma_cloud * ray_length(u_eye_height, s, u_cloud_base, u_cloud_top));
   return through(c, tau);
@@ -85,7 +88,8 @@ vec3 sky(vec3 dir, float s) {
 
 vec3 ground(vec3 p, float d) {
   vec3 fine = texture(u_ground_texture, p.xy / 150.0).rgb;
-  vec3 coarse = texture(u_ground_texture, p.xy / 1700.0 + vec2(0.31, 0.77)).rgb;
+  // Field-scale variation from a coarse mip level: bilinear, no derivatives needed.
+  vec3 coarse = textureLod(u_ground_texture, p.xy / 1700.0 + vec2(0.31, 0.77), 3.0).rgb;
   return through((0.55 * fine + 0.45 * coarse) * u_ambient, optical_depths(p, d));
 }
 
@@ -148,6 +152,8 @@ void main() {
 // E = I exp(-tau) / d^2 with the same optical depth as the surfaces, seen when E >= E_T.
 // Displayed opacity 0.3 at the threshold rising to 1 at 100 E_T; diameter 1 px (never less) up
 // to 100 E_T, growing 0.75 px per decade above that (to 6 px): the glare of bright lights.
+// With multisampling the least diameter is 2 px, so that a light still covers every sample of
+// the pixel it falls in (a 1-px point would be spread, dimmed, over up to four pixels).
 const char* const kLightVertex = "#version 330 core\n" FEDSIM_ATMOSPHERE R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_axis;
@@ -160,6 +166,7 @@ uniform mat4 u_projection;
 uniform float u_threshold_lux;
 uniform vec3 u_papi_red;
 uniform float u_red_filter;
+uniform float u_min_size_px;  // 1, or 2 with multisampling (a full pixel's samples covered)
 out vec3 v_colour;
 out float v_alpha;
 out float v_size;
@@ -193,7 +200,7 @@ void main() {
   float decades = log2(max(illuminance, 1.0e-30) / u_threshold_lux) * 0.30103;
   v_colour = c;
   v_alpha = decades < 0.0 ? 0.0 : clamp(0.3 + 0.35 * decades, 0.0, 1.0);
-  v_size = clamp(1.0 + 0.75 * (decades - 2.0), 1.0, 6.0);
+  v_size = clamp(1.0 + 0.75 * (decades - 2.0), u_min_size_px, 6.0);
   gl_PointSize = v_size;
   gl_Position = v_alpha > 0.0 ? u_projection * (u_view * vec4(rel, 1.0))
                               : vec4(2.0, 2.0, 2.0, 1.0);  // below threshold: outside the clip volume
@@ -207,11 +214,11 @@ in float v_size;
 out vec4 colour;
 void main() {
   float a = v_alpha;
-  if (v_size > 1.5) {
+  if (v_size > 2.5) {  // glare disc: full at the centre, fading to a third at its rim
     vec2 q = gl_PointCoord * 2.0 - 1.0;
     float r2 = dot(q, q);
     if (r2 > 1.0) discard;
-    a *= exp(-2.0 * r2);
+    a *= exp(-1.1 * r2);
   }
   colour = vec4(v_colour, a);
 }

@@ -27,6 +27,7 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   Environment day;
   day.sun_elevation_rad = 35.0 * kDegToRad;
   day.sun_azimuth_rad = 200.0 * kDegToRad;
+  day.visibility_m = 40000.0;
   const RenderedFrame frame = renderer.render(channel, eye, day);
   ASSERT_EQ(frame.image.width_px, 320);
   ASSERT_EQ(frame.image.height_px, 240);
@@ -47,6 +48,54 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
       ASSERT_EQ(a.b, b.b);
     }
   }
+
+  // Pavement is grey, the grass beside it green: 300 m past the threshold on the centreline
+  // against 150 m to the right of it.
+  const Scene& scene = renderer.scene();
+  const RunwayEndInfo& info = scene.runway_ends[scene.find_end("28R")];
+  const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad), 0.0);
+  const Eigen::Vector3d right(-forward.y(), forward.x(), 0.0);
+  const ChannelCamera camera = renderer.camera(channel, eye);
+  const auto greenness = [&](const Eigen::Vector3d& p) {
+    const auto px = camera.project(p);
+    EXPECT_TRUE(px && camera.in_picture(*px));
+    const Rgba8 c = frame.image.at(px->column(), px->row());
+    return c.g - 0.5 * (c.r + c.b);
+  };
+  const double runway = greenness(info.threshold_scene_m + 300.0 * forward + 12.0 * right);
+  const double grass = greenness(info.threshold_scene_m + 300.0 * forward + 150.0 * right);
+  EXPECT_GT(grass, runway + 8.0) << "grass " << grass << ", runway " << runway;
+  // Sky blue at the top, ground below.
+  const Rgba8 sky = frame.image.at(160, 5);
+  EXPECT_GT(sky.b, sky.r + 40);
+  EXPECT_GT(test::mean_luminance(frame.image, 0, 0, 320, 40),
+            test::mean_luminance(frame.image, 0, 200, 320, 40));
+  // Most approach lights in the picture stand out from their surroundings.
+  int in_picture = 0, standing_out = 0;
+  for (const auto& l : scene.lights_of(scene.find_end("28R"), LightRole::kApproachCentreline)) {
+    const auto p = camera.project(l.position_scene_m.cast<double>());
+    if (!p || !camera.in_picture(*p)) continue;
+    ++in_picture;
+    const double here = test::luminance_at(frame.image, p->column(), p->row());
+    const double around = test::mean_luminance(frame.image, p->column() + 3, p->row() - 1, 3, 3);
+    standing_out += here > around + 0.05 ? 1 : 0;
+  }
+  EXPECT_GT(in_picture, 100);
+  EXPECT_GT(standing_out, in_picture / 2) << standing_out << " of " << in_picture;
+}
+
+TEST(Smoke, RenderTimeFromTheLentClock) {
+  Renderer renderer(build_airport_scene(test::ksfo_runway_ends(), test::ksfo_options()));
+  ChannelConfig channel;
+  const EyePose eye = test::approach_eye(test::ksfo_end("28R"), 2000.0, 130.0, -3.0 * kDegToRad);
+  EXPECT_EQ(renderer.render(channel, eye, Environment{}).stats.render_time_ms, 0.0);  // no clock
+  std::int64_t now_ns = 0;
+  renderer.set_clock([&now_ns] { return now_ns += 1000000; });  // 1 ms a reading
+  const RenderStats s = renderer.render(channel, eye, Environment{}).stats;
+  EXPECT_DOUBLE_EQ(s.submit_time_ms, 1.0);  // start, draws issued, image read: three readings
+  EXPECT_DOUBLE_EQ(s.render_time_ms, 2.0);
+  EXPECT_EQ(s.triangles, renderer.scene().triangles.size() / 3);
+  EXPECT_EQ(s.lights, renderer.scene().lights.size());
 }
 
 }  // namespace
