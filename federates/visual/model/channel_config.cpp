@@ -3,13 +3,17 @@
 #include "common/units/units.hpp"
 #include "visual/model/input_checks.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace fedsim::visual {
 
 using units::kDegToRad;
 using units::kPi;
 
-void validate(const ChannelConfig& c, const std::string& where) {
-  const std::string at = where + " (channel '" + c.name + "')";
+namespace {
+
+void check_fields(const ChannelConfig& c, std::string_view at) {
   require_in_range(c.horizontal_fov_rad, 1.0 * kDegToRad, 150.0 * kDegToRad, at,
                    "horizontal_fov_rad", "rad");
   require_in_range(c.vertical_fov_rad, 1.0 * kDegToRad, 150.0 * kDegToRad, at,
@@ -26,6 +30,19 @@ void validate(const ChannelConfig& c, const std::string& where) {
   }
   if (c.samples != 1 && c.samples != 2 && c.samples != 4) {
     reject(at, "samples", std::to_string(c.samples) + " is not 1, 2 or 4");
+  }
+}
+
+}  // namespace
+
+void validate(const ChannelConfig& c, std::string_view where) {
+  try {
+    check_fields(c, where);
+  } catch (const std::invalid_argument& e) {
+    // Name the channel in the message (built only on failure: validate runs every frame).
+    std::string message = e.what();
+    message.insert(where.size(), " (channel '" + c.name + "')");
+    throw std::invalid_argument(message);
   }
 }
 

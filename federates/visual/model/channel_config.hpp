@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fedsim::visual {
@@ -36,7 +37,7 @@ struct ChannelConfig {
 /// a value out of range: fov in [1, 150] deg, width/height 16..8192 px, near 0.01..100 m, eye
 /// offset within 100 m, heading and roll offsets within +-180 deg, pitch within +-90 deg,
 /// samples 1, 2 or 4.
-void validate(const ChannelConfig& config, const std::string& where);
+void validate(const ChannelConfig& config, std::string_view where);
 
 /// Left, centre and right channels from the centre one: heading offsets -hfov, 0, +hfov, the
 /// centre's everything else, names "left", "centre", "right".

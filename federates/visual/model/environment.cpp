@@ -7,7 +7,7 @@
 
 namespace fedsim::visual {
 
-void validate(const Environment& e, const std::string& where) {
+void validate(const Environment& e, std::string_view where) {
   require_in_range(e.sun_elevation_rad, -units::kHalfPi, units::kHalfPi, where,
                    "sun_elevation_rad", "rad");
   require_in_range(e.sun_azimuth_rad, -units::kTwoPi, units::kTwoPi, where, "sun_azimuth_rad",

@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace fedsim::visual {
 
@@ -36,7 +37,7 @@ struct Environment {
 /// Throws std::invalid_argument naming the field: sun elevation +-90 deg, azimuth +-360 deg,
 /// visibility 10 m..1000 km, haze top 10..20000 m, cloud base 10..20000 m, top above the base
 /// (at most 15000 m thick), in-cloud visibility 5..5000 m.
-void validate(const Environment& environment, const std::string& where);
+void validate(const Environment& environment, std::string_view where);
 
 /// Koschmieder: sigma = -ln(0.05) / visibility [1/m].
 double extinction_per_m(double visibility_m);

@@ -9,7 +9,7 @@ using units::kHalfPi;
 using units::kPi;
 using units::kTwoPi;
 
-void validate(const EyePose& p, const std::string& where) {
+void validate(const EyePose& p, std::string_view where) {
   require_in_range(p.lat_rad, -kHalfPi, kHalfPi, where, "lat_rad", "rad");
   require_in_range(p.lon_rad, -kPi, kPi, where, "lon_rad", "rad");
   require_in_range(p.alt_msl_m, -1000.0, 100000.0, where, "alt_msl_m", "m");

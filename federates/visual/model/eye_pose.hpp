@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace fedsim::visual {
 
@@ -20,6 +21,6 @@ struct EyePose {
 /// Throws std::invalid_argument naming the field for a NaN/infinity or a value out of range:
 /// latitude +-90 deg, longitude +-180 deg, altitude -1000..100000 m, roll +-180 deg, pitch
 /// +-90 deg, heading +-360 deg.
-void validate(const EyePose& pose, const std::string& where);
+void validate(const EyePose& pose, std::string_view where);
 
 }  // namespace fedsim::visual

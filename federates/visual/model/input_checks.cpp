@@ -6,12 +6,12 @@
 
 namespace fedsim::visual {
 
-void reject(const std::string& where, const std::string& field, const std::string& problem) {
-  throw std::invalid_argument(where + ": field '" + field + "': " + problem);
+void reject(std::string_view where, std::string_view field, const std::string& problem) {
+  throw std::invalid_argument(std::string(where) + ": field '" + std::string(field) + "': " + problem);
 }
 
-void require_in_range(double value, double lo, double hi, const std::string& where,
-                      const std::string& field, const char* unit) {
+void require_in_range(double value, double lo, double hi, std::string_view where,
+                      std::string_view field, const char* unit) {
   if (!std::isfinite(value)) reject(where, field, "not a finite number");
   if (value < lo || value > hi) {
     char text[160];
@@ -20,8 +20,7 @@ void require_in_range(double value, double lo, double hi, const std::string& whe
   }
 }
 
-void require_in_range(int value, int lo, int hi, const std::string& where,
-                      const std::string& field) {
+void require_in_range(int value, int lo, int hi, std::string_view where, std::string_view field) {
   if (value < lo || value > hi) {
     reject(where, field,
            std::to_string(value) + " is outside [" + std::to_string(lo) + ", " +

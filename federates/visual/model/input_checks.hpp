@@ -4,15 +4,16 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace fedsim::visual {
 
 /// Throws unless lo <= value <= hi and value is finite; `unit` is shown with the numbers.
-void require_in_range(double value, double lo, double hi, const std::string& where,
-                      const std::string& field, const char* unit);
-void require_in_range(int value, int lo, int hi, const std::string& where,
-                      const std::string& field);
-[[noreturn]] void reject(const std::string& where, const std::string& field,
+/// Allocation-free unless it throws (the checks run every frame).
+void require_in_range(double value, double lo, double hi, std::string_view where,
+                      std::string_view field, const char* unit);
+void require_in_range(int value, int lo, int hi, std::string_view where, std::string_view field);
+[[noreturn]] void reject(std::string_view where, std::string_view field,
                          const std::string& problem);
 
 }  // namespace fedsim::visual
