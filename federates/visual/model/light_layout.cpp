@@ -14,6 +14,10 @@ using units::kDegToRad;
 constexpr float kRedFilter = 0.15f;     // Appendix 2: red = 0.15 x white
 constexpr float kYellowFilter = 0.40f;  // Appendix 2: yellow = 0.4 x white
 constexpr double kArcMinute = kDegToRad / 60.0;
+// Inset lights' lens above the pavement: above the 3 cm the markings are drawn at, so that a
+// centreline light on a centreline stripe is not hidden by the paint in the depth test.
+constexpr double kInsetHeightM = 0.06;
+constexpr double kElevatedHeightM = 0.35;
 
 LightSite site(double along, double right, double height, LightRole role) {
   LightSite s;
@@ -28,7 +32,7 @@ LightSite site(double along, double right, double height, LightRole role) {
 // 0.5 m otherwise.
 LightSite approach_site(const EndLightingInput& in, double along, double right, LightRole role,
                         const Eigen::Vector3f& colour, float intensity_cd) {
-  LightSite s = site(along, right, along >= in.runway_start_m ? 0.02 : 0.5, role);
+  LightSite s = site(along, right, along >= in.runway_start_m ? kInsetHeightM : 0.5, role);
   s.colour_rgb = colour;
   s.intensity_cd = intensity_cd;
   s.elevation_setting_rad = 6.0 * kDegToRad;
@@ -121,7 +125,7 @@ std::vector<LightSite> edge_lights(const EndLightingInput& in,
       intensity *= kYellowFilter;
     }
     for (double side : {-1.0, 1.0}) {
-      LightSite s = site(along, side * (0.5 * in.width_m + 0.6), 0.35, LightRole::kRunwayEdge);
+      LightSite s = site(along, side * (0.5 * in.width_m + 0.6), kElevatedHeightM, LightRole::kRunwayEdge);
       s.colour_rgb = colour;
       s.intensity_cd = intensity;
       s.elevation_setting_rad = 3.5 * kDegToRad;
@@ -137,7 +141,7 @@ std::vector<LightSite> edge_lights(const EndLightingInput& in,
 std::vector<LightSite> threshold_lights(const EndLightingInput& in) {
   std::vector<LightSite> out;
   for (double right : evenly(-0.5 * in.width_m, 0.5 * in.width_m, 3.0)) {
-    LightSite s = site(0.0, right, 0.35, LightRole::kThreshold);
+    LightSite s = site(0.0, right, kElevatedHeightM, LightRole::kThreshold);
     s.colour_rgb = aviation_green();
     s.intensity_cd = 10000.0f;
     s.elevation_setting_rad = 5.5 * kDegToRad;
@@ -153,7 +157,7 @@ std::vector<LightSite> runway_end_lights(const EndLightingInput& in) {
   std::vector<LightSite> out;
   const double spacing = std::min(6.0, in.width_m / 5.0);  // at least 6 lights
   for (double right : evenly(-0.5 * in.width_m, 0.5 * in.width_m, spacing)) {
-    LightSite s = site(in.threshold_to_stop_end_m, right, 0.35, LightRole::kRunwayEnd);
+    LightSite s = site(in.threshold_to_stop_end_m, right, kElevatedHeightM, LightRole::kRunwayEnd);
     s.colour_rgb = aviation_red();
     s.intensity_cd = 2500.0f;
     s.elevation_setting_rad = 2.5 * kDegToRad;
@@ -179,7 +183,7 @@ std::vector<LightSite> centreline_lights(const EndLightingInput& in) {
   int index = 0;
   for (double along = spacing; along < stop - 0.5 * spacing; along += spacing, ++index) {
     const double to_go = stop - along;
-    LightSite s = site(along, 0.0, 0.02, LightRole::kRunwayCentreline);
+    LightSite s = site(along, 0.0, kInsetHeightM, LightRole::kRunwayCentreline);
     const bool red = to_go <= 300.0 || (to_go <= 900.0 && index % 2 == 1);
     s.colour_rgb = red ? aviation_red() : aviation_white();
     s.intensity_cd = red ? white_cd * kRedFilter : white_cd;
@@ -198,7 +202,7 @@ std::vector<LightSite> touchdown_zone_lights(const EndLightingInput& in) {
   const double last = std::min(900.0, 0.5 * in.threshold_to_stop_end_m);
   for (double along = 30.0; along <= last + 1e-9; along += 30.0) {
     for (double r : {inner, inner + 1.5, inner + 3.0, -inner, -inner - 1.5, -inner - 3.0}) {
-      LightSite s = site(along, r, 0.02, LightRole::kTouchdownZone);
+      LightSite s = site(along, r, kInsetHeightM, LightRole::kTouchdownZone);
       s.colour_rgb = aviation_white();
       s.intensity_cd = 5000.0f;
       s.elevation_setting_rad = 4.0 * kDegToRad;

@@ -46,7 +46,7 @@ enum class ApproachLighting : std::uint8_t { kNone, kIcaoCatI, kIcaoCatIIorIII }
 struct LightSite {
   double along_m = 0.0;        // from the threshold, landing direction [m]
   double right_m = 0.0;        // [m]
-  double height_m = 0.35;      // above the runway profile (inset 0.02, elevated 0.35) [m]
+  double height_m = 0.35;      // above the runway profile (inset 0.06, elevated 0.35) [m]
   double elevation_setting_rad = 0.0;  // beam axis above the horizontal [rad]
   double toe_in_rad = 0.0;     // beam axis turned towards the centreline [rad]
   Eigen::Vector3f colour_rgb = Eigen::Vector3f::Ones();
