@@ -2,13 +2,13 @@
 // the KSFO scene seen from the 28R approach (CAT II/III: ALSF-2-like approach lights, PAPI,
 // edge, centreline and touchdown-zone lights; 4 runways with their Annex 14 markings).
 //
-// The eye flies down the 3 deg path from 3 NM (--distance-nm) at 70 m/s, one frame every 1/60 s, so that no
-// two frames are alike. For each picture size it renders --frames frames after --warmup, and
-// reports per frame the wall time of Renderer::render() (steady_clock around the call: set-up,
+// The eye flies down the 3 deg path from 3 NM (--distance-nm) at 70 m/s, one frame every 1/60 s, so
+// that no two frames are alike. For each picture size it renders --frames frames after --warmup,
+// and reports per frame the wall time of Renderer::render() (steady_clock around the call: set-up,
 // draw and read-back into an Image), the render time the renderer measures with the clock lent
 // to it (clear to image in memory) and when its draws were issued, as median, p99 and max, and
-// the frame rate the median allows. --png writes the last frame of the last size. The last line is one JSON
-// object with every figure. Runs on OSMesa (llvmpipe, the CPU): LP_NUM_THREADS sets its
+// the frame rate the median allows. --png writes the last frame of the last size. The last line is
+// one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU): LP_NUM_THREADS sets its
 // rasteriser threads (default: the cores).
 #include "common/units/units.hpp"
 #include "visual/model/airport_scene.hpp"
@@ -51,7 +51,9 @@ Stats stats_of(std::vector<double> ms) {
 }
 
 nlohmann::json to_json(const Stats& s) {
-  return {{"median_ms", s.median_ms}, {"p99_ms", s.p99_ms}, {"max_ms", s.max_ms},
+  return {{"median_ms", s.median_ms},
+          {"p99_ms", s.p99_ms},
+          {"max_ms", s.max_ms},
           {"mean_ms", s.mean_ms}};
 }
 
@@ -86,13 +88,18 @@ int main(int argc, char** argv) {
   std::string png;
   double visibility_m = 30000.0, sun_elevation_deg = 35.0, hfov_deg = 48.0, distance_nm = 3.0;
   app.add_option("--frames", frames, "frames measured per size")->check(CLI::Range(1, 100000));
-  app.add_option("--warmup", warmup, "frames rendered first, not measured")->check(CLI::Range(0, 1000));
+  app.add_option("--warmup", warmup, "frames rendered first, not measured")
+      ->check(CLI::Range(0, 1000));
   app.add_option("--size", sizes, "picture sizes WxH")->capture_default_str();
   app.add_option("--samples", samples, "multisampling 1, 2 or 4")->check(CLI::IsMember({1, 2, 4}));
-  app.add_option("--visibility-m", visibility_m, "meteorological visibility [m]")->check(CLI::Range(10.0, 1.0e6));
-  app.add_option("--sun-elevation-deg", sun_elevation_deg, "sun elevation [deg]")->check(CLI::Range(-90.0, 90.0));
-  app.add_option("--hfov-deg", hfov_deg, "horizontal field of view [deg]")->check(CLI::Range(1.0, 150.0));
-  app.add_option("--distance-nm", distance_nm, "start before the 28R threshold [NM]")->check(CLI::Range(0.2, 20.0));
+  app.add_option("--visibility-m", visibility_m, "meteorological visibility [m]")
+      ->check(CLI::Range(10.0, 1.0e6));
+  app.add_option("--sun-elevation-deg", sun_elevation_deg, "sun elevation [deg]")
+      ->check(CLI::Range(-90.0, 90.0));
+  app.add_option("--hfov-deg", hfov_deg, "horizontal field of view [deg]")
+      ->check(CLI::Range(1.0, 150.0));
+  app.add_option("--distance-nm", distance_nm, "start before the 28R threshold [NM]")
+      ->check(CLI::Range(0.2, 20.0));
   app.add_option("--png", png, "write the last frame of the last size to this PNG");
   CLI11_PARSE(app, argc, argv);
 
@@ -105,21 +112,26 @@ int main(int argc, char** argv) {
     options.ends["28R"] = cat3;
     const auto build_start = Clock::now();
     Scene scene = build_airport_scene(ends, options);
-    const double build_ms = std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
+    const double build_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
     const std::size_t triangles = scene.triangles.size() / 3, lights = scene.lights.size();
     Renderer renderer(std::move(scene));
     renderer.set_clock([] {
-      return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+      return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
+          .count();
     });
-    const auto& end28r = *std::find_if(ends.begin(), ends.end(), [](const auto& e) { return e.runway == "28R"; });
+    const auto& end28r =
+        *std::find_if(ends.begin(), ends.end(), [](const auto& e) { return e.runway == "28R"; });
 
     Environment environment;
     environment.visibility_m = visibility_m;
     environment.sun_elevation_rad = sun_elevation_deg * kDegToRad;
     environment.sun_azimuth_rad = 200.0 * kDegToRad;
     std::printf("fedsim-bench-visual: %s\n", renderer.description().c_str());
-    std::printf("KSFO scene: %zu triangles, %zu lights, built in %.1f ms; %d frames per size, "
-                "samples %d\n", triangles, lights, build_ms, frames, samples);
+    std::printf(
+        "KSFO scene: %zu triangles, %zu lights, built in %.1f ms; %d frames per size, "
+        "samples %d\n",
+        triangles, lights, build_ms, frames, samples);
 
     nlohmann::json results = nlohmann::json::array();
     Image image;
@@ -131,7 +143,8 @@ int main(int argc, char** argv) {
       channel.height_px = h;
       channel.samples = samples;
       channel.horizontal_fov_rad = hfov_deg * kDegToRad;
-      channel.vertical_fov_rad = 2.0 * std::atan(std::tan(0.5 * channel.horizontal_fov_rad) * h / w);
+      channel.vertical_fov_rad =
+          2.0 * std::atan(std::tan(0.5 * channel.horizontal_fov_rad) * h / w);
       std::vector<double> wall_ms, inner_ms, submit_ms;
       for (int i = 0; i < warmup + frames; ++i) {
         const double distance_m = distance_nm * fedsim::units::kNmToM - 70.0 / 60.0 * i;
@@ -145,13 +158,17 @@ int main(int argc, char** argv) {
           submit_ms.push_back(s.submit_time_ms);
         }
       }
-      const Stats wall = stats_of(wall_ms), inner = stats_of(inner_ms), submit = stats_of(submit_ms);
-      std::printf("%5dx%-5d render() median %7.2f ms  p99 %7.2f ms  max %7.2f ms  (%.1f frames/s)"
-                  "  [inside: %.2f ms, draws issued after %.2f ms]\n", w, h, wall.median_ms,
-                  wall.p99_ms, wall.max_ms, 1000.0 / wall.median_ms, inner.median_ms,
-                  submit.median_ms);
-      results.push_back({{"size", size}, {"render_call", to_json(wall)},
-                         {"render_time", to_json(inner)}, {"submit_time", to_json(submit)},
+      const Stats wall = stats_of(wall_ms), inner = stats_of(inner_ms),
+                  submit = stats_of(submit_ms);
+      std::printf(
+          "%5dx%-5d render() median %7.2f ms  p99 %7.2f ms  max %7.2f ms  (%.1f frames/s)"
+          "  [inside: %.2f ms, draws issued after %.2f ms]\n",
+          w, h, wall.median_ms, wall.p99_ms, wall.max_ms, 1000.0 / wall.median_ms, inner.median_ms,
+          submit.median_ms);
+      results.push_back({{"size", size},
+                         {"render_call", to_json(wall)},
+                         {"render_time", to_json(inner)},
+                         {"submit_time", to_json(submit)},
                          {"frames_per_s_at_median", 1000.0 / wall.median_ms}});
     }
     if (!png.empty()) {
@@ -160,8 +177,11 @@ int main(int argc, char** argv) {
     }
     const nlohmann::json figures = {{"bench", "visual"},
                                     {"renderer", renderer.description()},
-                                    {"scene", {{"airport", "KSFO"}, {"triangles", triangles},
-                                               {"lights", lights}, {"build_ms", build_ms}}},
+                                    {"scene",
+                                     {{"airport", "KSFO"},
+                                      {"triangles", triangles},
+                                      {"lights", lights},
+                                      {"build_ms", build_ms}}},
                                     {"samples", samples},
                                     {"frames", frames},
                                     {"results", results}};

@@ -15,14 +15,16 @@ namespace fedsim::visual {
 
 namespace {
 
-constexpr double kPaintLiftM = 0.03;      // markings above the pavement
-constexpr double kGroundBelowM = 0.3;     // the ground sphere below the lowest runway end
-constexpr double kPieceM = 50.0;          // pavement pieces along the runway
+constexpr double kPaintLiftM = 0.03;         // markings above the pavement
+constexpr double kGroundBelowM = 0.3;        // the ground sphere below the lowest runway end
+constexpr double kPieceM = 50.0;             // pavement pieces along the runway
 constexpr double kEdgeLightSpacingM = 60.0;  // Annex 14 5.3.9.4
 
 using nav::RunwayEndRecord;
 
-std::string where_of(const RunwayEndRecord& r) { return "runway end " + r.airport + " " + r.runway; }
+std::string where_of(const RunwayEndRecord& r) {
+  return "runway end " + r.airport + " " + r.runway;
+}
 
 void check_point(const nav::GeoPoint& p, const std::string& where, const std::string& name) {
   require_in_range(p.lat_rad, -units::kHalfPi, units::kHalfPi, where, name + ".lat_rad", "rad");
@@ -74,8 +76,7 @@ class SceneBuilder {
   void add_runway(const Runway& runway);
 
  private:
-  EndContext make_end(const RunwayEndRecord& end, const RunwayEndRecord* opposite,
-                      double width_m);
+  EndContext make_end(const RunwayEndRecord& end, const RunwayEndRecord* opposite, double width_m);
   void add_pavement(const EndContext& a, double from_m, double to_m);
   void add_paint(const EndContext& e, const std::vector<Quad2>& quads);
   void add_lights(const EndContext& e, const std::vector<LightSite>& sites);
@@ -113,7 +114,11 @@ EndContext SceneBuilder::make_end(const RunwayEndRecord& end, const RunwayEndRec
   info.category = opts.category;
   info.approach_lighting = end.lighted ? opts.approach_lighting : ApproachLighting::kNone;
   scene_.runway_ends.push_back(info);
-  return {&end, opts, frame, width_m, info.landing_distance_m,
+  return {&end,
+          opts,
+          frame,
+          width_m,
+          info.landing_distance_m,
           static_cast<int>(scene_.runway_ends.size()) - 1};
 }
 
@@ -159,8 +164,8 @@ void SceneBuilder::add_lights(const EndContext& e, const std::vector<LightSite>&
     // centreline by the toe-in, raised by the elevation setting.
     const Eigen::Vector3d horizontal =
         -forward * std::cos(s.toe_in_rad) - side * right * std::sin(s.toe_in_rad);
-    const Eigen::Vector3d axis = horizontal * std::cos(s.elevation_setting_rad) +
-                                 up * std::sin(s.elevation_setting_rad);
+    const Eigen::Vector3d axis =
+        horizontal * std::cos(s.elevation_setting_rad) + up * std::sin(s.elevation_setting_rad);
     LightPoint p;
     p.position_scene_m = e.frame.scene(s.along_m, s.right_m, s.height_m).cast<float>();
     p.beam_axis_scene = axis.normalized().cast<float>();
@@ -206,7 +211,8 @@ EndLightingInput SceneBuilder::lighting_input(const EndContext& e) const {
   return in;
 }
 
-void SceneBuilder::add_end_lights(const EndContext& e, const std::vector<double>& edge_positions_m) {
+void SceneBuilder::add_end_lights(const EndContext& e,
+                                  const std::vector<double>& edge_positions_m) {
   if (!e.record->lighted) {
     scene_.notes.push_back(where_of(*e.record) + ": unlighted, no lights drawn");
     return;
@@ -222,7 +228,8 @@ void SceneBuilder::add_end_lights(const EndContext& e, const std::vector<double>
   if (in.papi) scene_.runway_ends[e.index].papi_along_m = in.papi_along_m;
 }
 
-double width_of(const Runway& r, const AirportSceneOptions& options, std::vector<std::string>& notes) {
+double width_of(const Runway& r, const AirportSceneOptions& options,
+                std::vector<std::string>& notes) {
   if (r.a->width_m > 0.0) return r.a->width_m;
   if (r.b != nullptr && r.b->width_m > 0.0) return r.b->width_m;
   notes.push_back(where_of(*r.a) + ": width unknown, drawn " +
@@ -287,8 +294,8 @@ void validate(const RunwayEndRecord& r) {
                    "rad");
   require_in_range(r.length_m, 100.0, 10000.0, where, "length_m", "m");
   require_in_range(r.width_m, 0.0, 200.0, where, "width_m", "m");
-  require_in_range(r.displaced_threshold_m, 0.0, r.length_m - 100.0, where,
-                   "displaced_threshold_m", "m");
+  require_in_range(r.displaced_threshold_m, 0.0, r.length_m - 100.0, where, "displaced_threshold_m",
+                   "m");
   parse_designator(r.runway, where);
 }
 
@@ -316,8 +323,10 @@ Scene build_airport_scene(const std::vector<RunwayEndRecord>& ends,
                    "rad");
 
   double lowest = std::numeric_limits<double>::infinity();
-  for (const auto* e : open) lowest = std::min({lowest, e->threshold.elevation_m, e->end.elevation_m});
-  GeodeticPosition origin = options.reference_point ? *options.reference_point : reference_point(open);
+  for (const auto* e : open)
+    lowest = std::min({lowest, e->threshold.elevation_m, e->end.elevation_m});
+  GeodeticPosition origin =
+      options.reference_point ? *options.reference_point : reference_point(open);
   origin.alt_m = lowest - kGroundBelowM;
 
   Scene scene{SceneFrame(origin)};

@@ -36,9 +36,9 @@ struct RunwayEndOptions {
 };
 
 struct AirportSceneOptions {
-  RunwayEndOptions default_end;                  // for ends not named in `ends`
-  std::map<std::string, RunwayEndOptions> ends;  // by designator, e.g. "28R"
-  double unknown_width_m = 45.0;                 // for records with width 0 (unknown) [m]
+  RunwayEndOptions default_end;                     // for ends not named in `ends`
+  std::map<std::string, RunwayEndOptions> ends;     // by designator, e.g. "28R"
+  double unknown_width_m = 45.0;                    // for records with width 0 (unknown) [m]
   std::optional<GeodeticPosition> reference_point;  // lat/lon used; height: the ground's
 };
 

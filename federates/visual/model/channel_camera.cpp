@@ -29,8 +29,8 @@ ChannelCamera::ChannelCamera(const SceneFrame& frame, const ChannelConfig& confi
   const Eigen::Matrix3d scene_from_body =
       frame.scene_from_local_ned(pose.lat_rad, pose.lon_rad) *
       dcm_from_euler({pose.phi_rad, pose.theta_rad, pose.psi_rad});
-  const Eigen::Matrix3d body_from_channel = dcm_from_euler(
-      {config.roll_offset_rad, config.pitch_offset_rad, config.heading_offset_rad});
+  const Eigen::Matrix3d body_from_channel =
+      dcm_from_euler({config.roll_offset_rad, config.pitch_offset_rad, config.heading_offset_rad});
   scene_from_channel_ = scene_from_body * body_from_channel;
   eye_scene_m_ = frame.position_scene_m(eye) + scene_from_body * config.eye_offset_body_m;
   tan_half_h_ = std::tan(0.5 * config.horizontal_fov_rad);
@@ -50,8 +50,7 @@ std::optional<PixelPoint> ChannelCamera::project(const Eigen::Vector3d& point_sc
 }
 
 bool ChannelCamera::in_picture(const PixelPoint& p) const {
-  return p.x_px >= 0.0 && p.x_px < config_.width_px && p.y_px >= 0.0 &&
-         p.y_px < config_.height_px;
+  return p.x_px >= 0.0 && p.x_px < config_.width_px && p.y_px >= 0.0 && p.y_px < config_.height_px;
 }
 
 Eigen::Vector3d ChannelCamera::ray_scene(double x_px, double y_px) const {

@@ -16,8 +16,8 @@ namespace {
 void check_fields(const ChannelConfig& c, std::string_view at) {
   require_in_range(c.horizontal_fov_rad, 1.0 * kDegToRad, 150.0 * kDegToRad, at,
                    "horizontal_fov_rad", "rad");
-  require_in_range(c.vertical_fov_rad, 1.0 * kDegToRad, 150.0 * kDegToRad, at,
-                   "vertical_fov_rad", "rad");
+  require_in_range(c.vertical_fov_rad, 1.0 * kDegToRad, 150.0 * kDegToRad, at, "vertical_fov_rad",
+                   "rad");
   require_in_range(c.width_px, 16, 8192, at, "width_px");
   require_in_range(c.height_px, 16, 8192, at, "height_px");
   require_in_range(c.near_m, 0.01, 100.0, at, "near_m", "m");

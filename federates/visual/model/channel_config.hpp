@@ -27,10 +27,10 @@ struct ChannelConfig {
   double roll_offset_rad = 0.0;     // roll of the picture about the boresight [rad]
   double horizontal_fov_rad = 0.6981317007977318;  // full angle, 40 deg [rad]
   double vertical_fov_rad = 0.5235987755982988;    // full angle, 30 deg [rad]
-  int width_px = 320;                // [px]
-  int height_px = 240;               // [px]
-  double near_m = 0.5;               // nearest distance drawn along the boresight [m]
-  int samples = 1;                   // multisample anti-aliasing: 1 (off), 2 or 4 samples/pixel
+  int width_px = 320;                              // [px]
+  int height_px = 240;                             // [px]
+  double near_m = 0.5;                             // nearest distance drawn along the boresight [m]
+  int samples = 1;  // multisample anti-aliasing: 1 (off), 2 or 4 samples/pixel
 };
 
 /// Throws std::invalid_argument "<where>: field '<field>': <problem>" for a NaN, an infinity or

@@ -20,13 +20,20 @@ Quad2 box(double u0, double v0, double u1, double v1) {
 // g middle.
 Quad2 segment(char s) {
   switch (s) {
-    case 'a': return box(0, H - T, W, H);
-    case 'b': return box(W - T, 0.5 * H, W, H);
-    case 'c': return box(W - T, 0, W, 0.5 * H);
-    case 'd': return box(0, 0, W, T);
-    case 'e': return box(0, 0, T, 0.5 * H);
-    case 'f': return box(0, 0.5 * H, T, H);
-    default: return box(0, 0.5 * (H - T), W, 0.5 * (H + T));  // 'g'
+    case 'a':
+      return box(0, H - T, W, H);
+    case 'b':
+      return box(W - T, 0.5 * H, W, H);
+    case 'c':
+      return box(W - T, 0, W, 0.5 * H);
+    case 'd':
+      return box(0, 0, W, T);
+    case 'e':
+      return box(0, 0, T, 0.5 * H);
+    case 'f':
+      return box(0, 0.5 * H, T, H);
+    default:
+      return box(0, 0.5 * (H - T), W, 0.5 * (H + T));  // 'g'
   }
 }
 
@@ -40,18 +47,30 @@ std::vector<Quad2> segments(const char* list) {
 
 std::vector<Quad2> glyph_quads(char c) {
   switch (c) {
-    case '0': return segments("abcdef");
-    case '1': return {box(0.5 * (W - T), 0, 0.5 * (W + T), H)};
-    case '2': return segments("abged");
-    case '3': return segments("abgcd");
-    case '4': return segments("fgbc");
-    case '5': return segments("afgcd");
-    case '6': return segments("afgedc");
-    case '7': return segments("abc");
-    case '8': return segments("abcdefg");
-    case '9': return segments("abcdfg");
-    case 'L': return segments("fed");
-    case 'C': return segments("afed");
+    case '0':
+      return segments("abcdef");
+    case '1':
+      return {box(0.5 * (W - T), 0, 0.5 * (W + T), H)};
+    case '2':
+      return segments("abged");
+    case '3':
+      return segments("abgcd");
+    case '4':
+      return segments("fgbc");
+    case '5':
+      return segments("afgcd");
+    case '6':
+      return segments("afgedc");
+    case '7':
+      return segments("abc");
+    case '8':
+      return segments("abcdefg");
+    case '9':
+      return segments("abcdfg");
+    case 'L':
+      return segments("fed");
+    case 'C':
+      return segments("afed");
     case 'R': {
       auto quads = segments("afebg");
       // The leg: from the middle bar down to the lower right corner, stroke T wide.

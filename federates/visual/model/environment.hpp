@@ -20,16 +20,16 @@
 namespace fedsim::visual {
 
 struct CloudLayer {
-  double base_agl_m = 300.0;               // cloud base above the ground [m]
-  double top_agl_m = 1500.0;               // cloud top above the ground [m]
-  double visibility_in_cloud_m = 60.0;     // MOR inside the cloud [m]
+  double base_agl_m = 300.0;            // cloud base above the ground [m]
+  double top_agl_m = 1500.0;            // cloud top above the ground [m]
+  double visibility_in_cloud_m = 60.0;  // MOR inside the cloud [m]
 };
 
 struct Environment {
   double sun_elevation_rad = 0.7853981633974483;  // above the horizon at the airport [rad]
   double sun_azimuth_rad = 3.141592653589793;     // true, clockwise from north [rad]
-  double visibility_m = 20000.0;   // MOR in the haze/fog layer next to the ground [m]
-  double haze_top_agl_m = 1500.0;  // top of that layer (capped at the cloud base) [m]
+  double visibility_m = 20000.0;    // MOR in the haze/fog layer next to the ground [m]
+  double haze_top_agl_m = 1500.0;   // top of that layer (capped at the cloud base) [m]
   std::optional<CloudLayer> cloud;  // none: no cloud
   bool airport_lights_on = true;
 };

@@ -10,12 +10,12 @@
 namespace fedsim::visual {
 
 struct EyePose {
-  double lat_rad = 0.0;      // geodetic latitude [rad]
-  double lon_rad = 0.0;      // longitude, east positive [rad]
-  double alt_msl_m = 0.0;    // height above the WGS-84 ellipsoid, taken as MSL [m]
-  double phi_rad = 0.0;      // roll [rad]
-  double theta_rad = 0.0;    // pitch [rad]
-  double psi_rad = 0.0;      // true heading [rad]
+  double lat_rad = 0.0;    // geodetic latitude [rad]
+  double lon_rad = 0.0;    // longitude, east positive [rad]
+  double alt_msl_m = 0.0;  // height above the WGS-84 ellipsoid, taken as MSL [m]
+  double phi_rad = 0.0;    // roll [rad]
+  double theta_rad = 0.0;  // pitch [rad]
+  double psi_rad = 0.0;    // true heading [rad]
 };
 
 /// Throws std::invalid_argument naming the field for a NaN/infinity or a value out of range:

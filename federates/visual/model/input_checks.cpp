@@ -7,7 +7,8 @@
 namespace fedsim::visual {
 
 void reject(std::string_view where, std::string_view field, const std::string& problem) {
-  throw std::invalid_argument(std::string(where) + ": field '" + std::string(field) + "': " + problem);
+  throw std::invalid_argument(std::string(where) + ": field '" + std::string(field) +
+                              "': " + problem);
 }
 
 void require_in_range(double value, double lo, double hi, std::string_view where,

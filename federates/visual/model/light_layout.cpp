@@ -70,8 +70,10 @@ void cat_i_approach(std::vector<LightSite>& out, const EndLightingInput& in) {
   for (int k = 1; k <= 30; ++k) {
     const double along = -30.0 * k;
     std::vector<double> sources{0.0};
-    if (k > 20) sources = {-1.5, 0.0, 1.5};
-    else if (k > 10) sources = {-0.75, 0.75};
+    if (k > 20)
+      sources = {-1.5, 0.0, 1.5};
+    else if (k > 10)
+      sources = {-0.75, 0.75};
     add_row(out, in, along, sources, LightRole::kApproachCentreline, white, 20000.0f);
   }
   add_row(out, in, -300.0, crossbar(4.0, 15.0, 2.75), LightRole::kApproachCrossbar, white,
@@ -85,15 +87,14 @@ void cat_ii_approach(std::vector<LightSite>& out, const EndLightingInput& in) {
     add_row(out, in, -30.0 * k, barrette, LightRole::kApproachCentreline, white, 20000.0f);
   }
   const double inner = 0.5 * in.touchdown_zone_gauge_m;
-  const std::vector<double> side{inner, inner + 1.5, inner + 3.0, -inner, -inner - 1.5,
-                                 -inner - 3.0};
+  const std::vector<double> side{inner,  inner + 1.5,  inner + 3.0,
+                                 -inner, -inner - 1.5, -inner - 3.0};
   for (int k = 1; k <= 9; ++k) {
     add_row(out, in, -30.0 * k, side, LightRole::kApproachSideRow, aviation_red(), 5000.0f);
   }
   add_row(out, in, -150.0, crossbar(3.5, inner - 1.5, 1.5), LightRole::kApproachCrossbar, white,
           20000.0f);
-  add_row(out, in, -300.0, crossbar(3.5, 15.0, 1.5), LightRole::kApproachCrossbar, white,
-          20000.0f);
+  add_row(out, in, -300.0, crossbar(3.5, 15.0, 1.5), LightRole::kApproachCrossbar, white, 20000.0f);
 }
 
 }  // namespace
@@ -125,7 +126,8 @@ std::vector<LightSite> edge_lights(const EndLightingInput& in,
       intensity *= kYellowFilter;
     }
     for (double side : {-1.0, 1.0}) {
-      LightSite s = site(along, side * (0.5 * in.width_m + 0.6), kElevatedHeightM, LightRole::kRunwayEdge);
+      LightSite s =
+          site(along, side * (0.5 * in.width_m + 0.6), kElevatedHeightM, LightRole::kRunwayEdge);
       s.colour_rgb = colour;
       s.intensity_cd = intensity;
       s.elevation_setting_rad = 3.5 * kDegToRad;
@@ -220,13 +222,12 @@ std::vector<LightSite> papi_units(const EndLightingInput& in) {
   if (!in.papi) return out;
   const double offsets_arcmin[4] = {30.0, 10.0, -10.0, -30.0};
   for (int k = 0; k < 4; ++k) {
-    LightSite s = site(in.papi_along_m, -(0.5 * in.width_m + 15.0 + 9.0 * k), 0.9,
-                       LightRole::kPapi);
+    LightSite s =
+        site(in.papi_along_m, -(0.5 * in.width_m + 15.0 + 9.0 * k), 0.9, LightRole::kPapi);
     s.beam = BeamKind::kPapi;
     s.colour_rgb = aviation_white();
     s.intensity_cd = 15000.0f;
-    s.papi_transition_rad =
-        static_cast<float>(in.glide_path_rad + offsets_arcmin[k] * kArcMinute);
+    s.papi_transition_rad = static_cast<float>(in.glide_path_rad + offsets_arcmin[k] * kArcMinute);
     s.beam_half_width_h_rad = static_cast<float>(10.0 * kDegToRad);
     s.beam_half_width_v_rad = static_cast<float>(8.0 * kDegToRad);
     out.push_back(s);

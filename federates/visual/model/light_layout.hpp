@@ -44,11 +44,11 @@ namespace fedsim::visual {
 enum class ApproachLighting : std::uint8_t { kNone, kIcaoCatI, kIcaoCatIIorIII };
 
 struct LightSite {
-  double along_m = 0.0;        // from the threshold, landing direction [m]
-  double right_m = 0.0;        // [m]
-  double height_m = 0.35;      // above the runway profile (inset 0.06, elevated 0.35) [m]
+  double along_m = 0.0;                // from the threshold, landing direction [m]
+  double right_m = 0.0;                // [m]
+  double height_m = 0.35;              // above the runway profile (inset 0.06, elevated 0.35) [m]
   double elevation_setting_rad = 0.0;  // beam axis above the horizontal [rad]
-  double toe_in_rad = 0.0;     // beam axis turned towards the centreline [rad]
+  double toe_in_rad = 0.0;             // beam axis turned towards the centreline [rad]
   Eigen::Vector3f colour_rgb = Eigen::Vector3f::Ones();
   float intensity_cd = 0.0f;
   float beam_half_width_h_rad = 0.1f;
@@ -65,9 +65,9 @@ struct EndLightingInput {
   ApproachCategory category = ApproachCategory::kPrecisionCatI;
   ApproachLighting approach = ApproachLighting::kIcaoCatI;
   bool papi = true;
-  double papi_along_m = 400.0;              // abeam the aiming point [m]
+  double papi_along_m = 400.0;                  // abeam the aiming point [m]
   double glide_path_rad = 0.05235987755982989;  // 3 deg
-  double touchdown_zone_gauge_m = 18.0;     // between the inner TDZ lights [m]
+  double touchdown_zone_gauge_m = 18.0;         // between the inner TDZ lights [m]
 };
 
 /// Aviation colours as displayed (Annex 14 Appendix 1 chromaticities, shown in sRGB).

@@ -16,13 +16,20 @@ struct OsMesaContext::Handle {
 
 OsMesaContext::OsMesaContext()
     : handle_(std::make_unique<Handle>()), surface_(kSurfacePx * kSurfacePx * 4, 0) {
-  const int attributes[] = {OSMESA_FORMAT,          OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,      0,
-                            OSMESA_STENCIL_BITS,    0,
-                            OSMESA_ACCUM_BITS,      0,
-                            OSMESA_PROFILE,         OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 3,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,
+                            OSMESA_STENCIL_BITS,
+                            0,
+                            OSMESA_ACCUM_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
                             0};
   handle_->context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (handle_->context == nullptr) {

@@ -68,7 +68,8 @@ std::vector<float> value_noise(std::uint64_t seed, int size_px, int cells, int o
 TextureImage ground_texture(std::uint64_t seed, int size_px) {
   const std::vector<float> grass = value_noise(seed, size_px, 8, 5);
   const std::vector<float> fields = value_noise(seed + 1, size_px, 4, 3);
-  TextureImage t{size_px, std::vector<std::uint8_t>(static_cast<std::size_t>(size_px) * size_px * 4)};
+  TextureImage t{size_px,
+                 std::vector<std::uint8_t>(static_cast<std::size_t>(size_px) * size_px * 4)};
   for (std::size_t i = 0; i < grass.size(); ++i) {
     const float g = grass[i];
     // Green grass, with drier, browner patches where the coarse noise is high.
@@ -84,7 +85,8 @@ TextureImage ground_texture(std::uint64_t seed, int size_px) {
 TextureImage pavement_texture(std::uint64_t seed, int size_px) {
   const std::vector<float> grain = value_noise(seed, size_px, 32, 3);
   const std::vector<float> patches = value_noise(seed + 1, size_px, 4, 2);
-  TextureImage t{size_px, std::vector<std::uint8_t>(static_cast<std::size_t>(size_px) * size_px * 4)};
+  TextureImage t{size_px,
+                 std::vector<std::uint8_t>(static_cast<std::size_t>(size_px) * size_px * 4)};
   for (std::size_t i = 0; i < grain.size(); ++i) {
     const float v = 0.26f + 0.08f * grain[i] + 0.06f * (patches[i] - 0.5f);
     put(t, i, v, v, v * 1.02f);

@@ -20,7 +20,7 @@ constexpr std::uint64_t kGroundSeed = 0x6f7265646e756f67ULL;
 constexpr std::uint64_t kPavementSeed = 0x746e656d65766170ULL;
 constexpr int kGroundTexturePx = 512;
 constexpr int kPavementTexturePx = 256;
-constexpr float kRedFilter = 0.15f;   // PAPI red beam: the white through the red filter
+constexpr float kRedFilter = 0.15f;  // PAPI red beam: the white through the red filter
 constexpr float kNoCloudM = 1.0e9f;
 
 // Everything of the atmosphere a frame needs, from the environment and the eye.
@@ -37,14 +37,17 @@ struct Atmosphere {
   double threshold_lux = 0.0;
 };
 
-float luminance(const Eigen::Vector3f& c) { return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z(); }
+float luminance(const Eigen::Vector3f& c) {
+  return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z();
+}
 
 Atmosphere atmosphere_of(const Environment& e) {
   Atmosphere a;
   a.sky = sky_state(e.sun_elevation_rad);
   const double ce = std::cos(e.sun_elevation_rad);
   a.sun_scene = Eigen::Vector3d(ce * std::cos(e.sun_azimuth_rad), ce * std::sin(e.sun_azimuth_rad),
-                                -std::sin(e.sun_elevation_rad)).cast<float>();
+                                -std::sin(e.sun_elevation_rad))
+                    .cast<float>();
   // The haze scatters the horizon's light, greyer than the clear horizon itself.
   const Eigen::Vector3f grey = Eigen::Vector3f::Constant(luminance(a.sky.horizon_rgb));
   a.haze_colour = 0.5f * (a.sky.horizon_rgb + grey);
@@ -124,9 +127,8 @@ std::vector<float> light_data(const Scene& scene) {
     d.insert(d.end(), {l.position_scene_m.x(), l.position_scene_m.y(), l.position_scene_m.z(),
                        l.beam_axis_scene.x(), l.beam_axis_scene.y(), l.beam_axis_scene.z(),
                        l.up_scene.x(), l.up_scene.y(), l.up_scene.z(), l.colour_rgb.x(),
-                       l.colour_rgb.y(), l.colour_rgb.z(), l.intensity_cd,
-                       l.beam_half_width_h_rad, l.beam_half_width_v_rad, l.papi_transition_rad,
-                       static_cast<float>(l.beam)});
+                       l.colour_rgb.y(), l.colour_rgb.z(), l.intensity_cd, l.beam_half_width_h_rad,
+                       l.beam_half_width_v_rad, l.papi_transition_rad, static_cast<float>(l.beam)});
   }
   return d;
 }
@@ -137,8 +139,9 @@ void check_scene(const Scene& scene) {
                         l.up_scene.allFinite() && std::isfinite(l.intensity_cd);
     if (!finite || l.intensity_cd < 0.0f || l.beam_half_width_h_rad <= 0.0f ||
         l.beam_half_width_v_rad <= 0.0f) {
-      throw std::invalid_argument("Renderer: a light of the scene has a non-finite position or "
-                                  "a bad intensity or beam width");
+      throw std::invalid_argument(
+          "Renderer: a light of the scene has a non-finite position or "
+          "a bad intensity or beam width");
     }
   }
   for (const auto& v : scene.triangles) {
@@ -154,9 +157,8 @@ struct Renderer::Impl {
   Impl(Scene s, std::unique_ptr<GlContext> c)
       : scene(std::move(s)),
         context(std::move(c)),
-        gl((context->make_current(), GlProcLoader([this](const char* n) {
-             return context->proc_address(n);
-           }))),
+        gl((context->make_current(),
+            GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
         environment(gl, "environment", shaders::kEnvironmentVertex, shaders::kEnvironmentFragment),
         surfaces(gl, "surfaces", shaders::kSurfaceVertex, shaders::kSurfaceFragment),
         lights(gl, "lights", shaders::kLightVertex, shaders::kLightFragment) {
@@ -231,7 +233,8 @@ struct Renderer::Impl {
     gl.DepthMask(GL_FALSE);
     environment.use();
     set_atmosphere(environment, a, camera, scene);
-    const Eigen::Matrix3f scene_from_gl = camera.view_rotation_gl().topLeftCorner<3, 3>().transpose();
+    const Eigen::Matrix3f scene_from_gl =
+        camera.view_rotation_gl().topLeftCorner<3, 3>().transpose();
     environment.set("u_scene_from_gl", scene_from_gl);
     environment.set("u_tan_half", Eigen::Vector2f(static_cast<float>(camera.tan_half_horizontal()),
                                                   static_cast<float>(camera.tan_half_vertical())));
@@ -242,7 +245,10 @@ struct Renderer::Impl {
     environment.set("u_sun", a.sun_scene);
     const Eigen::Vector3f up = (camera.eye_scene_m() - centre).normalized().cast<float>();
     Eigen::Vector3f sun_horizontal = a.sun_scene - a.sun_scene.dot(up) * up;
-    if (sun_horizontal.norm() > 1.0e-4f) sun_horizontal.normalize(); else sun_horizontal.setZero();
+    if (sun_horizontal.norm() > 1.0e-4f)
+      sun_horizontal.normalize();
+    else
+      sun_horizontal.setZero();
     environment.set("u_sun_horizontal", sun_horizontal);
     environment.set("u_zenith", a.sky.zenith_rgb);
     environment.set("u_horizon", a.sky.horizon_rgb);

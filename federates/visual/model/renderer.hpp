@@ -40,10 +40,10 @@ namespace fedsim::visual {
 using FrameClock = std::function<std::int64_t()>;
 
 struct RenderStats {
-  double render_time_ms = 0.0;     // clear to the image in memory (0 without a clock) [ms]
-  double submit_time_ms = 0.0;     // clear to the last draw call issued [ms]
-  std::size_t triangles = 0;       // surface triangles submitted
-  std::size_t lights = 0;          // light points submitted
+  double render_time_ms = 0.0;       // clear to the image in memory (0 without a clock) [ms]
+  double submit_time_ms = 0.0;       // clear to the last draw call issued [ms]
+  std::size_t triangles = 0;         // surface triangles submitted
+  std::size_t lights = 0;            // light points submitted
   double light_threshold_lux = 0.0;  // E_T the frame used
 };
 

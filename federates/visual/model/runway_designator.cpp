@@ -25,9 +25,9 @@ std::string RunwayDesignator::reciprocal() const {
 RunwayDesignator parse_designator(const std::string& text, const std::string& where) {
   std::size_t digits = 0;
   while (digits < text.size() && std::isdigit(static_cast<unsigned char>(text[digits]))) ++digits;
-  const bool letter_ok = text.size() == digits ||
-                         (text.size() == digits + 1 &&
-                          (text.back() == 'L' || text.back() == 'C' || text.back() == 'R'));
+  const bool letter_ok =
+      text.size() == digits || (text.size() == digits + 1 &&
+                                (text.back() == 'L' || text.back() == 'C' || text.back() == 'R'));
   if (digits == 0 || digits > 2 || !letter_ok) {
     reject(where, "runway", "'" + text + "' is not a runway designator (01-36 and L/C/R)");
   }

@@ -7,8 +7,8 @@
 namespace fedsim::visual {
 
 struct RunwayDesignator {
-  int number = 0;    // 1..36
-  char letter = 0;   // 'L', 'C', 'R' or 0
+  int number = 0;   // 1..36
+  char letter = 0;  // 'L', 'C', 'R' or 0
   /// The two digits as painted: ICAO Annex 14 5.2.2.4 precedes a single digit with a zero.
   std::string painted_number() const;
   /// The reciprocal end's designator: number +- 18, L <-> R, C stays ("28R" -> "10L").

@@ -13,9 +13,9 @@
 namespace fedsim::visual {
 
 struct RunwayProfile {
-  double start_along_m = 0.0;     // where start_elevation_m holds (this end's runway end) [m]
+  double start_along_m = 0.0;      // where start_elevation_m holds (this end's runway end) [m]
   double start_elevation_m = 0.0;  // [m MSL]
-  double end_along_m = 1.0;       // the opposite runway end [m]
+  double end_along_m = 1.0;        // the opposite runway end [m]
   double end_elevation_m = 0.0;    // [m MSL]
   double elevation_m(double along_m) const;
 };

@@ -9,22 +9,22 @@ namespace fedsim::visual {
 
 namespace {
 
-constexpr double kStripeStartM = 6.0;          // 5.2.4.5
-constexpr double kStripeLengthM = 30.0;        // 5.2.4.5
-constexpr double kEdgeClearanceM = 3.0;        // 5.2.4.7: to within 3 m of the edge
-constexpr double kMaxHalfSpanM = 27.0;         // 5.2.4.7: or 27 m from the centreline
-constexpr double kDesignationGapM = 12.0;      // beyond the stripes (Figure 5-2)
-constexpr double kLetterNumberGapM = 3.0;      // between the letter and the number
+constexpr double kStripeStartM = 6.0;               // 5.2.4.5
+constexpr double kStripeLengthM = 30.0;             // 5.2.4.5
+constexpr double kEdgeClearanceM = 3.0;             // 5.2.4.7: to within 3 m of the edge
+constexpr double kMaxHalfSpanM = 27.0;              // 5.2.4.7: or 27 m from the centreline
+constexpr double kDesignationGapM = 12.0;           // beyond the stripes (Figure 5-2)
+constexpr double kLetterNumberGapM = 3.0;           // between the letter and the number
 constexpr double kGlyphGapM = 0.75 * kGlyphWidthM;  // between the two digits
-constexpr double kCentrelineStripeM = 30.0;    // 5.2.3.4
-constexpr double kCentrelineGapM = 20.0;       // 5.2.3.4
-constexpr double kCentrelineClearanceM = 12.0;  // from a designation to the first stripe
-constexpr double kTdzLengthM = 22.5;           // 5.2.6.5 pattern A
-constexpr double kTdzWidthM = 3.0;             // 5.2.6.5 pattern A
-constexpr double kTdzIntervalM = 150.0;        // 5.2.6.3
-constexpr double kTdzAimingClearanceM = 50.0;  // 5.2.6.3
-constexpr double kTransverseStripeM = 1.8;     // Figure 5-4
-constexpr double kPieceM = 50.0;               // longest quad laid on the curved earth
+constexpr double kCentrelineStripeM = 30.0;         // 5.2.3.4
+constexpr double kCentrelineGapM = 20.0;            // 5.2.3.4
+constexpr double kCentrelineClearanceM = 12.0;      // from a designation to the first stripe
+constexpr double kTdzLengthM = 22.5;                // 5.2.6.5 pattern A
+constexpr double kTdzWidthM = 3.0;                  // 5.2.6.5 pattern A
+constexpr double kTdzIntervalM = 150.0;             // 5.2.6.3
+constexpr double kTdzAimingClearanceM = 50.0;       // 5.2.6.3
+constexpr double kTransverseStripeM = 1.8;          // Figure 5-4
+constexpr double kPieceM = 50.0;                    // longest quad laid on the curved earth
 
 Quad2 rect(double x0, double y0, double x1, double y1) {
   return {{Eigen::Vector2d(x0, y0), Eigen::Vector2d(x1, y0), Eigen::Vector2d(x1, y1),
@@ -73,14 +73,14 @@ void add_text(std::vector<Quad2>& out, const std::string& text, double x0) {
 // arrows along the centreline of the displaced part pointing at it.
 void add_displaced_threshold(std::vector<Quad2>& out, double width_m, double displaced_m) {
   out.push_back(rect(0.0, -0.5 * width_m + 1.0, kTransverseStripeM, 0.5 * width_m - 1.0));
-  constexpr double kArrowLengthM = 30.0, kHeadLengthM = 9.0, kHeadWidthM = 4.5,
-                   kShaftWidthM = 0.9, kArrowIntervalM = 45.0;
+  constexpr double kArrowLengthM = 30.0, kHeadLengthM = 9.0, kHeadWidthM = 4.5, kShaftWidthM = 0.9,
+                   kArrowIntervalM = 45.0;
   for (double tip = -10.0; tip - kArrowLengthM > -displaced_m + 5.0; tip -= kArrowIntervalM) {
-    out.push_back(rect(tip - kArrowLengthM, -0.5 * kShaftWidthM, tip - kHeadLengthM,
-                       0.5 * kShaftWidthM));
-    out.push_back({{Eigen::Vector2d(tip - kHeadLengthM, -0.5 * kHeadWidthM),
-                    Eigen::Vector2d(tip, 0.0), Eigen::Vector2d(tip, 0.0),
-                    Eigen::Vector2d(tip - kHeadLengthM, 0.5 * kHeadWidthM)}});
+    out.push_back(
+        rect(tip - kArrowLengthM, -0.5 * kShaftWidthM, tip - kHeadLengthM, 0.5 * kShaftWidthM));
+    out.push_back(
+        {{Eigen::Vector2d(tip - kHeadLengthM, -0.5 * kHeadWidthM), Eigen::Vector2d(tip, 0.0),
+          Eigen::Vector2d(tip, 0.0), Eigen::Vector2d(tip - kHeadLengthM, 0.5 * kHeadWidthM)}});
   }
 }
 
@@ -111,10 +111,13 @@ int touchdown_zone_pair_count(double lda) {
 
 double centreline_width_m(ApproachCategory category) {
   switch (category) {
-    case ApproachCategory::kPrecisionCatIIorIII: return 0.90;
+    case ApproachCategory::kPrecisionCatIIorIII:
+      return 0.90;
     case ApproachCategory::kPrecisionCatI:
-    case ApproachCategory::kNonPrecision: return 0.45;
-    default: return 0.30;
+    case ApproachCategory::kNonPrecision:
+      return 0.45;
+    default:
+      return 0.30;
   }
 }
 

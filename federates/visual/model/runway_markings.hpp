@@ -45,10 +45,10 @@ enum class ApproachCategory : std::uint8_t {
 };
 
 struct AimingPointLayout {
-  double start_m = 0.0;           // from the threshold to the beginning of the marking [m]
-  double length_m = 0.0;          // [m]
-  double width_m = 0.0;           // of each of the two stripes [m]
-  double inner_spacing_m = 0.0;   // between their inner sides [m]
+  double start_m = 0.0;          // from the threshold to the beginning of the marking [m]
+  double length_m = 0.0;         // [m]
+  double width_m = 0.0;          // of each of the two stripes [m]
+  double inner_spacing_m = 0.0;  // between their inner sides [m]
 };
 
 /// Threshold stripes for a runway width (Annex 14 5.2.4.6).
@@ -69,10 +69,10 @@ struct EndMarkingInput {
 };
 
 struct EndMarkings {
-  std::vector<Quad2> quads;           // (x along, y right) of the end [m]
+  std::vector<Quad2> quads;  // (x along, y right) of the end [m]
   int threshold_stripes = 0;
   double threshold_stripe_width_m = 0.0;
-  double designation_end_m = 0.0;     // where the designation ends, along [m]
+  double designation_end_m = 0.0;  // where the designation ends, along [m]
   std::optional<AimingPointLayout> aiming_point;
   std::vector<double> touchdown_zone_starts_m;  // each pair's beginning, along [m]
 };

@@ -8,10 +8,9 @@
 namespace fedsim::visual {
 
 SceneFrame::SceneFrame(const GeodeticPosition& origin) : origin_(origin) {
-  require_in_range(origin.lat_rad, -units::kHalfPi, units::kHalfPi, "SceneFrame origin",
-                   "lat_rad", "rad");
-  require_in_range(origin.lon_rad, -units::kPi, units::kPi, "SceneFrame origin", "lon_rad",
+  require_in_range(origin.lat_rad, -units::kHalfPi, units::kHalfPi, "SceneFrame origin", "lat_rad",
                    "rad");
+  require_in_range(origin.lon_rad, -units::kPi, units::kPi, "SceneFrame origin", "lon_rad", "rad");
   require_in_range(origin.alt_m, -1000.0, 10000.0, "SceneFrame origin", "alt_m", "m");
   origin_ecef_m_ = Wgs84::ecef_from_geodetic(origin);
   scene_from_ecef_ = Wgs84::ned_from_ecef(origin.lat_rad, origin.lon_rad);
@@ -25,7 +24,8 @@ Eigen::Vector3d SceneFrame::position_scene_m(const GeodeticPosition& point) cons
 }
 
 GeodeticPosition SceneFrame::geodetic(const Eigen::Vector3d& position_scene_m) const {
-  return Wgs84::geodetic_from_ecef(origin_ecef_m_ + scene_from_ecef_.transpose() * position_scene_m);
+  return Wgs84::geodetic_from_ecef(origin_ecef_m_ +
+                                   scene_from_ecef_.transpose() * position_scene_m);
 }
 
 Eigen::Matrix3d SceneFrame::scene_from_local_ned(double lat_rad, double lon_rad) const {

@@ -16,11 +16,12 @@ struct SkyRow {
   float zenith[3];
   float horizon[3];
   float sunward[3];
-  float ambient;                  // grey level of a white horizontal surface
-  double log10_luminance;         // log10 of the background luminance [cd/m^2]
+  float ambient;           // grey level of a white horizontal surface
+  double log10_luminance;  // log10 of the background luminance [cd/m^2]
 };
 
 // Sun elevation ascending. Night rows tinted blue (scotopic look), day rows neutral.
+// clang-format off
 constexpr std::array<SkyRow, 13> kRows = {{
     {-90.0, {0.004f, 0.005f, 0.012f}, {0.008f, 0.009f, 0.016f}, {0.008f, 0.009f, 0.016f}, 0.006f, -3.0},
     {-18.0, {0.004f, 0.005f, 0.012f}, {0.008f, 0.009f, 0.016f}, {0.008f, 0.009f, 0.016f}, 0.006f, -3.0},
@@ -36,6 +37,7 @@ constexpr std::array<SkyRow, 13> kRows = {{
     {40.0, {0.210f, 0.410f, 0.790f}, {0.730f, 0.810f, 0.900f}, {0.780f, 0.840f, 0.910f}, 0.950f, 3.95},
     {90.0, {0.200f, 0.400f, 0.800f}, {0.740f, 0.820f, 0.920f}, {0.740f, 0.820f, 0.920f}, 1.000f, 4.0},
 }};
+// clang-format on
 
 Eigen::Vector3f lerp(const float a[3], const float b[3], float t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
@@ -50,8 +52,8 @@ SkyState sky_state(double sun_elevation_rad) {
   while (i + 2 < kRows.size() && kRows[i + 1].sun_elevation_deg < e) ++i;
   const SkyRow& a = kRows[i];
   const SkyRow& b = kRows[i + 1];
-  const auto t = static_cast<float>((e - a.sun_elevation_deg) /
-                                    (b.sun_elevation_deg - a.sun_elevation_deg));
+  const auto t =
+      static_cast<float>((e - a.sun_elevation_deg) / (b.sun_elevation_deg - a.sun_elevation_deg));
   SkyState s;
   s.zenith_rgb = lerp(a.zenith, b.zenith, t);
   s.horizon_rgb = lerp(a.horizon, b.horizon, t);

@@ -17,11 +17,11 @@
 namespace fedsim::visual {
 
 struct SkyState {
-  Eigen::Vector3f zenith_rgb;            // sky colour overhead [0..1]
-  Eigen::Vector3f horizon_rgb;           // at the horizon away from the sun [0..1]
-  Eigen::Vector3f horizon_sunward_rgb;   // at the horizon below the sun [0..1]
-  Eigen::Vector3f ambient_rgb;           // illumination of a horizontal white surface [0..1]
-  Eigen::Vector3f sun_rgb;               // the sun's disc (0 when below the horizon) [0..1]
+  Eigen::Vector3f zenith_rgb;             // sky colour overhead [0..1]
+  Eigen::Vector3f horizon_rgb;            // at the horizon away from the sun [0..1]
+  Eigen::Vector3f horizon_sunward_rgb;    // at the horizon below the sun [0..1]
+  Eigen::Vector3f ambient_rgb;            // illumination of a horizontal white surface [0..1]
+  Eigen::Vector3f sun_rgb;                // the sun's disc (0 when below the horizon) [0..1]
   double background_luminance_cd_per_m2;  // horizon-sky luminance the eye adapts to [cd/m^2]
 };
 

@@ -67,7 +67,8 @@ SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad) 
                         std::sin(2 * m) * (0.019993 - 0.000101 * t) + std::sin(3 * m) * 0.000289;
   const double true_longitude = mean_longitude + centre;
   const double omega = (125.04 - 1934.136 * t) * kDegToRad;
-  const double apparent_longitude = (true_longitude - 0.00569 - 0.00478 * std::sin(omega)) * kDegToRad;
+  const double apparent_longitude =
+      (true_longitude - 0.00569 - 0.00478 * std::sin(omega)) * kDegToRad;
   const double mean_obliquity =
       23.0 + (26.0 + (21.448 - t * (46.815 + t * (0.00059 - t * 0.001813))) / 60.0) / 60.0;
   const double obliquity = (mean_obliquity + 0.00256 * std::cos(omega)) * kDegToRad;
@@ -80,20 +81,22 @@ SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad) 
       (y * std::sin(2 * l0) - 2 * eccentricity * std::sin(m) +
        4 * eccentricity * y * std::sin(m) * std::cos(2 * l0) - 0.5 * y * y * std::sin(4 * l0) -
        1.25 * eccentricity * eccentricity * std::sin(2 * m));
-  const double true_solar_time_min = wrap_degrees(
-      (time.seconds_of_day / 60.0 + equation_of_time_min + 4.0 * lon_rad * kRadToDeg) / 4.0) * 4.0;
+  const double true_solar_time_min =
+      wrap_degrees((time.seconds_of_day / 60.0 + equation_of_time_min + 4.0 * lon_rad * kRadToDeg) /
+                   4.0) *
+      4.0;
   const double hour_angle = (true_solar_time_min / 4.0 - 180.0) * kDegToRad;
 
   const double cos_zenith = std::sin(lat_rad) * std::sin(declination) +
                             std::cos(lat_rad) * std::cos(declination) * std::cos(hour_angle);
-  const double geometric_elevation_deg = 90.0 - std::acos(std::clamp(cos_zenith, -1.0, 1.0)) * kRadToDeg;
+  const double geometric_elevation_deg =
+      90.0 - std::acos(std::clamp(cos_zenith, -1.0, 1.0)) * kRadToDeg;
   // Azimuth from south, westward (Meeus eq. 13.5), turned to clockwise from north.
   const double azimuth_from_south =
       std::atan2(std::sin(hour_angle), std::cos(hour_angle) * std::sin(lat_rad) -
                                            std::tan(declination) * std::cos(lat_rad));
   SunDirection s;
-  s.elevation_rad =
-      (geometric_elevation_deg + refraction_deg(geometric_elevation_deg)) * kDegToRad;
+  s.elevation_rad = (geometric_elevation_deg + refraction_deg(geometric_elevation_deg)) * kDegToRad;
   s.azimuth_rad = wrap_degrees((azimuth_from_south + units::kPi) * kRadToDeg) * kDegToRad;
   s.declination_rad = declination;
   return s;

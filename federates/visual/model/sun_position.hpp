@@ -10,8 +10,8 @@ namespace fedsim::visual {
 
 struct UtcTime {
   int year = 2000;
-  int month = 1;         // 1..12
-  int day = 1;           // 1..31
+  int month = 1;                    // 1..12
+  int day = 1;                      // 1..31
   double seconds_of_day = 43200.0;  // UTC seconds since midnight [s]
 };
 

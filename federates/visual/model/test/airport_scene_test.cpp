@@ -25,7 +25,8 @@ TEST(AirportScene, KsfoHasEightEndsOnFourRunways) {
   EXPECT_EQ(r28.threshold_stripes, 16);  // 61 m wide
   EXPECT_NEAR(r28.landing_distance_m, (11870.0 - 300.0) * units::kFtToM, 1e-6);
   EXPECT_EQ(r28.approach_lighting, ApproachLighting::kIcaoCatIIorIII);
-  EXPECT_EQ(scene.runway_ends[scene.find_end("28L")].approach_lighting, ApproachLighting::kIcaoCatI);
+  EXPECT_EQ(scene.runway_ends[scene.find_end("28L")].approach_lighting,
+            ApproachLighting::kIcaoCatI);
 }
 
 TEST(AirportScene, ThresholdsWhereTheRecordsPutThem) {
@@ -66,7 +67,8 @@ TEST(AirportScene, LightsOfEachKind) {
   const auto threshold = scene.lights_of(r28, LightRole::kThreshold);
   EXPECT_GE(threshold.size(), 21u);
   const auto& info = scene.runway_ends[r28];
-  const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad), 0.0);
+  const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad),
+                                0.0);
   for (const auto& l : scene.lights_of(r28, LightRole::kApproachCentreline)) {
     EXPECT_LT((l.position_scene_m.cast<double>() - info.threshold_scene_m).dot(forward), -29.0);
   }
@@ -97,7 +99,8 @@ TEST(AirportScene, BadRecordsNameTheirField) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("runway end KSFO 28L: field 'threshold.lat_rad'"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   ends = test::ksfo_runway_ends();
   ends[0].width_m = -3.0;

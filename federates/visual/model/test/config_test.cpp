@@ -39,7 +39,8 @@ TEST(ChannelConfig, MalformedConfigsNameTheField) {
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'vertical_fov_rad'"), std::string::npos);
   c = ChannelConfig{};
   c.samples = 3;
-  EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'samples': 3 is not 1, 2 or 4"), std::string::npos);
+  EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'samples': 3 is not 1, 2 or 4"),
+            std::string::npos);
   c = ChannelConfig{};
   c.eye_offset_body_m.y() = INFINITY;
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'eye_offset_body_m.y'"), std::string::npos);
@@ -54,7 +55,8 @@ TEST(EyePose, BadPosesNameTheField) {
   EXPECT_NE(error_of([&] { validate(p, "eye"); }).find("eye: field 'lat_rad'"), std::string::npos);
   p = EyePose{};
   p.alt_msl_m = std::nan("");
-  EXPECT_NE(error_of([&] { validate(p, "eye"); }).find("'alt_msl_m': not a finite number"), std::string::npos);
+  EXPECT_NE(error_of([&] { validate(p, "eye"); }).find("'alt_msl_m': not a finite number"),
+            std::string::npos);
   p = EyePose{};
   p.theta_rad = -1.7;
   EXPECT_NE(error_of([&] { validate(p, "eye"); }).find("'theta_rad'"), std::string::npos);
@@ -77,8 +79,9 @@ TEST(Png, RoundTripAndErrors) {
   Image image(17, 9);
   for (int row = 0; row < 9; ++row) {
     for (int col = 0; col < 17; ++col) {
-      image.set(col, row, {static_cast<std::uint8_t>(col * 15), static_cast<std::uint8_t>(row * 28),
-                           static_cast<std::uint8_t>((col * row) % 256), 255});
+      image.set(col, row,
+                {static_cast<std::uint8_t>(col * 15), static_cast<std::uint8_t>(row * 28),
+                 static_cast<std::uint8_t>((col * row) % 256), 255});
     }
   }
   const auto path = (test::output_dir() / "round_trip.png").string();

@@ -34,8 +34,8 @@ class Fog : public ::testing::Test {
   }
 
   struct Sight {
-    double surface_contrast;      // runway pavement against the horizon sky
-    int threshold_lights_seen;    // of the threshold lights in the picture
+    double surface_contrast;    // runway pavement against the horizon sky
+    int threshold_lights_seen;  // of the threshold lights in the picture
     int threshold_lights_in_picture;
     double background_luminance;  // horizon sky
   };
@@ -52,12 +52,14 @@ class Fog : public ::testing::Test {
     // Bare pavement 100 m past the threshold, 8 m right of the centreline (between the
     // designation, the centreline stripes and the touchdown-zone markings).
     const RunwayEndInfo& info = scene.runway_ends[index];
-    const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad), 0.0);
+    const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad),
+                                  0.0);
     const Eigen::Vector3d right(-forward.y(), forward.x(), 0.0);
     const auto p = camera.project(info.threshold_scene_m + 100.0 * forward + 8.0 * right);
     EXPECT_TRUE(p && camera.in_picture(*p));
     // The horizon sky, 2 px above the horizon (3 deg above the centre: pitch -3 deg).
-    const int horizon_row = static_cast<int>(120.0 * (1.0 - std::tan(3.0 * kDegToRad) / std::tan(0.5 * channel_.vertical_fov_rad)));
+    const int horizon_row = static_cast<int>(
+        120.0 * (1.0 - std::tan(3.0 * kDegToRad) / std::tan(0.5 * channel_.vertical_fov_rad)));
     Sight s;
     s.background_luminance = test::mean_luminance(f.image, 150, horizon_row - 3, 20, 2);
     const double surface = f.image.at(p->column(), p->row()).luminance();
@@ -69,7 +71,8 @@ class Fog : public ::testing::Test {
       ++s.threshold_lights_in_picture;
       const Rgba8 px = f.image.at(q->column(), q->row());
       // Green: the light's colour stands out from the grey fog.
-      if (px.g > px.r + 25 && px.luminance() > 1.05 * s.background_luminance) ++s.threshold_lights_seen;
+      if (px.g > px.r + 25 && px.luminance() > 1.05 * s.background_luminance)
+        ++s.threshold_lights_seen;
     }
     return s;
   }
@@ -110,8 +113,10 @@ TEST_F(Fog, ByDayTheLightsAtTwiceTheVisibilityAreBelowThreshold) {
   EXPECT_LT(far.surface_contrast, 0.05);
   EXPECT_EQ(far.threshold_lights_seen, 0);
   // The thresholds that make the difference (sky_model.hpp): dusk ~2e-6 lux, day ~2e-4 lux.
-  const double dusk_threshold = light_threshold_lux(sky_state(dusk_.sun_elevation_rad).background_luminance_cd_per_m2);
-  const double day_threshold = light_threshold_lux(sky_state(day.sun_elevation_rad).background_luminance_cd_per_m2);
+  const double dusk_threshold =
+      light_threshold_lux(sky_state(dusk_.sun_elevation_rad).background_luminance_cd_per_m2);
+  const double day_threshold =
+      light_threshold_lux(sky_state(day.sun_elevation_rad).background_luminance_cd_per_m2);
   EXPECT_GT(day_threshold, 30.0 * dusk_threshold);
 }
 

@@ -58,16 +58,20 @@ inline nav::RunwayEndRecord end_record(const RunwayCsvRow& row, bool low_end) {
 }
 
 inline std::vector<nav::RunwayEndRecord> ksfo_runway_ends() {
+  // clang-format off
   static const RunwayCsvRow rows[] = {
-      {"KSFO", 11870, 200, "ASP", true, false, "10L", 37.628742, -122.39341, 5, 0, "28R",
-       37.613538, -122.35716, 13, 300},
-      {"KSFO", 11381, 200, "ASP", true, false, "10R", 37.626298, -122.393124, 6, 0, "28L",
-       37.61172, -122.358367, 13, 300},
-      {"KSFO", 7650, 200, "ASP", true, false, "1L", 37.607898, -122.38295, 10, 645, "19R",
-       37.626476, -122.37063, 9, 0},
-      {"KSFO", 8660, 200, "ASP", true, false, "1R", 37.606333, -122.381061, 12, 560, "19L",
-       37.627346, -122.367124, 10, 0},
+      // airport length width surface lighted closed | low end: ident lat lon elev_ft disp_ft |
+      // high end: ident lat lon elev_ft disp_ft
+      {"KSFO", 11870, 200, "ASP", true, false,
+       "10L", 37.628742, -122.39341, 5, 0, "28R", 37.613538, -122.35716, 13, 300},
+      {"KSFO", 11381, 200, "ASP", true, false,
+       "10R", 37.626298, -122.393124, 6, 0, "28L", 37.61172, -122.358367, 13, 300},
+      {"KSFO", 7650, 200, "ASP", true, false,
+       "1L", 37.607898, -122.38295, 10, 645, "19R", 37.626476, -122.37063, 9, 0},
+      {"KSFO", 8660, 200, "ASP", true, false,
+       "1R", 37.606333, -122.381061, 12, 560, "19L", 37.627346, -122.367124, 10, 0},
   };
+  // clang-format on
   std::vector<nav::RunwayEndRecord> ends;
   for (const auto& row : rows) {
     ends.push_back(end_record(row, true));

@@ -103,14 +103,18 @@ TEST(RunwayLights, CentrelineColourCodingTowardsTheStopEnd) {  // 5.3.12.7
   int red_in_alternating = 0, white_in_alternating = 0;
   for (const auto& s : lights) {
     const double to_go = 3000.0 - s.along_m;
-    if (to_go > 900.0) EXPECT_TRUE(is_white(s.colour_rgb)) << s.along_m;
-    if (to_go <= 300.0) EXPECT_TRUE(is_red(s.colour_rgb)) << s.along_m;
+    if (to_go > 900.0) {
+      EXPECT_TRUE(is_white(s.colour_rgb)) << s.along_m;
+    }
+    if (to_go <= 300.0) {
+      EXPECT_TRUE(is_red(s.colour_rgb)) << s.along_m;
+    }
     if (to_go > 300.0 && to_go <= 900.0) {
       (is_red(s.colour_rgb) ? red_in_alternating : white_in_alternating)++;
     }
     EXPECT_DOUBLE_EQ(std::fmod(s.along_m, 15.0), 0.0);  // 15 m spacing on CAT II/III
   }
-  EXPECT_EQ(std::abs(red_in_alternating - white_in_alternating) <= 1, true);
+  EXPECT_LE(std::abs(red_in_alternating - white_in_alternating), 1);
   EXPECT_GT(red_in_alternating, 10);
   // CAT I on a 45 m runway: none (5.3.12.2 only asks for them on runways wider than 50 m).
   in.category = ApproachCategory::kPrecisionCatI;

@@ -41,17 +41,19 @@ class PapiPicture : public ::testing::Test {
   }
 
   // The units as seen from the approach, outermost (leftmost) first.
-  std::string seen_at(double angle_deg, const Environment& environment, std::vector<double>* columns = nullptr) {
+  std::string seen_at(double angle_deg, const Environment& environment,
+                      std::vector<double>* columns = nullptr) {
     const auto& end = test::ksfo_end("28R");
     const auto& opposite = test::ksfo_end("10L");
     const double aim_m = 400.0;  // Table 5-1, LDA >= 2400 m
     const double d_m = 1500.0;   // eye to the aiming point, horizontally
     // Runway surface at the aiming point, linear between the published end elevations.
     const double from_end_m = end.displaced_threshold_m + aim_m;
-    const double aim_elevation_m = end.end.elevation_m +
+    const double aim_elevation_m =
+        end.end.elevation_m +
         (opposite.end.elevation_m - end.end.elevation_m) * from_end_m / end.length_m;
-    const double height_m = aim_elevation_m - end.threshold.elevation_m +
-                            d_m * std::tan(angle_deg * kDegToRad);
+    const double height_m =
+        aim_elevation_m - end.threshold.elevation_m + d_m * std::tan(angle_deg * kDegToRad);
     const EyePose eye = test::approach_eye(end, d_m - aim_m, height_m, -angle_deg * kDegToRad);
     const RenderedFrame f = renderer_.render(channel_, eye, environment);
     const Scene& scene = renderer_.scene();
@@ -66,7 +68,8 @@ class PapiPicture : public ::testing::Test {
       if (!p || !camera.in_picture(*p)) return "";
       by_column.emplace_back(p->x_px, classify(f.image.at(p->column(), p->row())));
     }
-    std::sort(by_column.begin(), by_column.end(), [](auto& a, auto& b) { return a.first < b.first; });
+    std::sort(by_column.begin(), by_column.end(),
+              [](auto& a, auto& b) { return a.first < b.first; });
     std::vector<Seen> seen;
     for (const auto& [x, s] : by_column) {
       seen.push_back(s);

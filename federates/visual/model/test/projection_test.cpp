@@ -101,8 +101,8 @@ class Projection : public ::testing::Test {
 TEST_F(Projection, CameraMatchesTheAnalyticPinhole) {
   const ChannelCamera camera(frame_, channel_, eye_);
   for (const Marker& m : markers(200)) {
-    const auto p = camera.project(frame_.position_scene_m({m.lat_deg * kDegToRad,
-                                                           m.lon_deg * kDegToRad, m.alt_m}));
+    const auto p = camera.project(
+        frame_.position_scene_m({m.lat_deg * kDegToRad, m.lon_deg * kDegToRad, m.alt_m}));
     ASSERT_TRUE(p.has_value());
     EXPECT_NEAR(p->x_px, m.pixel.x(), 1e-3);
     EXPECT_NEAR(p->y_px, m.pixel.y(), 1e-3);
@@ -119,14 +119,17 @@ TEST_F(Projection, AKnownPointOnTheBoresightAndOneAtTheCorner) {
   EXPECT_NEAR(centre->x_px, 160.0, 1e-6);
   EXPECT_NEAR(centre->y_px, 120.0, 1e-6);
   const GeodeticPosition g = frame_.geodetic(ahead);
-  const Eigen::Vector2d a = analytic_pixel(eye_, channel_, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
+  const Eigen::Vector2d a =
+      analytic_pixel(eye_, channel_, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
   EXPECT_NEAR(a.x(), 160.0, 1e-3);
   EXPECT_NEAR(a.y(), 120.0, 1e-3);
   ChannelConfig plain = channel_;
   plain.heading_offset_rad = plain.pitch_offset_rad = plain.roll_offset_rad = 0.0;
-  const Eigen::Vector2d b = analytic_pixel(eye_, plain, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
+  const Eigen::Vector2d b =
+      analytic_pixel(eye_, plain, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
   EXPECT_GT((b - Eigen::Vector2d(160.0, 120.0)).norm(), 20.0);
-  const Eigen::Vector3d corner_dir = camera.scene_from_channel() *
+  const Eigen::Vector3d corner_dir =
+      camera.scene_from_channel() *
       Eigen::Vector3d(1.0, std::tan(20.0 * kDegToRad), std::tan(14.0 * kDegToRad));
   const auto corner = camera.project(camera.eye_scene_m() + 800.0 * corner_dir);
   ASSERT_TRUE(corner.has_value());
@@ -142,11 +145,14 @@ TEST_F(Projection, RenderedLightPointsLightTheAnalyticPixel) {
   Environment night;
   night.sun_elevation_rad = -30.0 * kDegToRad;
   night.visibility_m = 1.0e6;
-  const double threshold = light_threshold_lux(sky_state(night.sun_elevation_rad).background_luminance_cd_per_m2);
+  const double threshold =
+      light_threshold_lux(sky_state(night.sun_elevation_rad).background_luminance_cd_per_m2);
   const ChannelCamera camera(frame_, channel_, eye_);
   for (const Marker& m : ms) {
     LightPoint l;
-    l.position_scene_m = frame_.position_scene_m({m.lat_deg * kDegToRad, m.lon_deg * kDegToRad, m.alt_m}).cast<float>();
+    l.position_scene_m =
+        frame_.position_scene_m({m.lat_deg * kDegToRad, m.lon_deg * kDegToRad, m.alt_m})
+            .cast<float>();
     const double d = (l.position_scene_m.cast<double>() - camera.eye_scene_m()).norm();
     l.intensity_cd = static_cast<float>(20.0 * threshold * d * d);  // 20 E_T: a 1-pixel point
     l.beam = BeamKind::kOmnidirectional;
@@ -156,7 +162,8 @@ TEST_F(Projection, RenderedLightPointsLightTheAnalyticPixel) {
   const RenderedFrame frame = renderer.render(channel_, eye_, night);
   int lit = 0;
   for (int row = 0; row < 240; ++row) {
-    for (int col = 0; col < 320; ++col) lit += test::luminance_at(frame.image, col, row) > 0.3 ? 1 : 0;
+    for (int col = 0; col < 320; ++col)
+      lit += test::luminance_at(frame.image, col, row) > 0.3 ? 1 : 0;
   }
   EXPECT_EQ(lit, static_cast<int>(ms.size()));  // one pixel each, nothing else
   for (const Marker& m : ms) {

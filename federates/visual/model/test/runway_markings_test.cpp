@@ -123,7 +123,8 @@ TEST(RunwayDesignator, ParsesAndFindsTheReciprocal) {
 }
 
 TEST(RunwayMarkings, CentrelineStripesAndGapsPerAnnex14) {  // 5.2.3.4
-  const auto stripes = centreline_stripes(80.0, 3400.0, centreline_width_m(ApproachCategory::kPrecisionCatIIorIII));
+  const auto stripes =
+      centreline_stripes(80.0, 3400.0, centreline_width_m(ApproachCategory::kPrecisionCatIIorIII));
   ASSERT_GT(stripes.size(), 60u);
   for (std::size_t i = 0; i < stripes.size(); ++i) {
     const Extent e = extent_of(stripes[i]);
@@ -131,7 +132,9 @@ TEST(RunwayMarkings, CentrelineStripesAndGapsPerAnnex14) {  // 5.2.3.4
     EXPECT_NEAR(e.y1 - e.y0, 0.90, 1e-9);
     EXPECT_GE(e.x0, 80.0);
     EXPECT_LE(e.x1, 3400.0);
-    if (i > 0) EXPECT_NEAR(e.x0 - extent_of(stripes[i - 1]).x1, 20.0, 1e-9);
+    if (i > 0) {
+      EXPECT_NEAR(e.x0 - extent_of(stripes[i - 1]).x1, 20.0, 1e-9);
+    }
   }
   EXPECT_DOUBLE_EQ(centreline_width_m(ApproachCategory::kPrecisionCatI), 0.45);
   EXPECT_DOUBLE_EQ(centreline_width_m(ApproachCategory::kVisual), 0.30);

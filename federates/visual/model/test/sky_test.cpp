@@ -39,14 +39,16 @@ TEST_F(Sky, DayIsBrighterThanNight) {
   const double sky_day = test::mean_luminance(d, 0, 0, 320, 48);
   const double sky_twilight = test::mean_luminance(t, 0, 0, 320, 48);
   const double sky_night = test::mean_luminance(n, 0, 0, 320, 48);
-  std::printf("sky luminance: day %.3f, twilight %.3f, night %.4f\n", sky_day, sky_twilight, sky_night);
+  std::printf("sky luminance: day %.3f, twilight %.3f, night %.4f\n", sky_day, sky_twilight,
+              sky_night);
   EXPECT_GT(sky_day, 0.4);
   EXPECT_LT(sky_night, 0.03);
   EXPECT_GT(sky_day, 20.0 * sky_night);
   EXPECT_GT(sky_twilight, sky_night);
   EXPECT_LT(sky_twilight, sky_day);
   // The ground darkens with the sky.
-  EXPECT_GT(test::mean_luminance(d, 0, 200, 320, 40), 5.0 * test::mean_luminance(n, 0, 200, 320, 40));
+  EXPECT_GT(test::mean_luminance(d, 0, 200, 320, 40),
+            5.0 * test::mean_luminance(n, 0, 200, 320, 40));
 }
 
 TEST_F(Sky, SunsetHorizonIsWarmerTowardsTheSun) {
@@ -79,7 +81,8 @@ TEST_F(Sky, InsideACloudEverythingIsCloud) {
   // Below the base the ground is seen again (negative control).
   e.cloud = CloudLayer{400.0, 1200.0, 60.0};
   const Image below = render(e);
-  EXPECT_GT(std::abs(test::luminance_at(below, 160, 10) - test::luminance_at(below, 160, 230)), 0.05);
+  EXPECT_GT(std::abs(test::luminance_at(below, 160, 10) - test::luminance_at(below, 160, 230)),
+            0.05);
 }
 
 TEST(SkyModel, LightThresholdFollowsTheRvrFormula) {

@@ -20,7 +20,8 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   const auto& end = test::ksfo_end("28R");
   const double distance_m = 3.0 * units::kNmToM;
   // On a 3 deg path to the aiming point 400 m beyond the threshold.
-  const EyePose eye = test::approach_eye(end, distance_m, (distance_m + 400.0) * std::tan(3.0 * kDegToRad), -3.0 * kDegToRad);
+  const EyePose eye = test::approach_eye(
+      end, distance_m, (distance_m + 400.0) * std::tan(3.0 * kDegToRad), -3.0 * kDegToRad);
   ChannelConfig channel;
   channel.width_px = 320;
   channel.height_px = 240;
@@ -31,9 +32,8 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   const RenderedFrame frame = renderer.render(channel, eye, day);
   ASSERT_EQ(frame.image.width_px, 320);
   ASSERT_EQ(frame.image.height_px, 240);
-  std::printf("render %.1f ms, %zu triangles, %zu lights; %s\n",
-              frame.stats.render_time_ms, frame.stats.triangles, frame.stats.lights,
-              renderer.description().c_str());
+  std::printf("render %.1f ms, %zu triangles, %zu lights; %s\n", frame.stats.render_time_ms,
+              frame.stats.triangles, frame.stats.lights, renderer.description().c_str());
 
   const auto path = (test::output_dir() / "ksfo_28r_3nm_day.png").string();
   write_png(frame.image, path);
@@ -53,7 +53,8 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   // against 150 m to the right of it.
   const Scene& scene = renderer.scene();
   const RunwayEndInfo& info = scene.runway_ends[scene.find_end("28R")];
-  const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad), 0.0);
+  const Eigen::Vector3d forward(std::cos(info.heading_true_rad), std::sin(info.heading_true_rad),
+                                0.0);
   const Eigen::Vector3d right(-forward.y(), forward.x(), 0.0);
   const ChannelCamera camera = renderer.camera(channel, eye);
   const auto greenness = [&](const Eigen::Vector3d& p) {

@@ -77,9 +77,9 @@ inline double mean_luminance(const Image& image, int column0, int row0, int colu
 /// Where test pictures are written: $FEDSIM_VISUAL_TEST_OUTPUT or <tmp>/fedsim_visual_tests.
 inline std::filesystem::path output_dir() {
   const char* env = std::getenv("FEDSIM_VISUAL_TEST_OUTPUT");
-  std::filesystem::path dir = env != nullptr ? std::filesystem::path(env)
-                                             : std::filesystem::temp_directory_path() /
-                                                   "fedsim_visual_tests";
+  std::filesystem::path dir = env != nullptr
+                                  ? std::filesystem::path(env)
+                                  : std::filesystem::temp_directory_path() / "fedsim_visual_tests";
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -112,7 +112,8 @@ TEST_F(ThreeChannels, APointAQuarterPixelEitherSideOfTheBoundary) {
   EXPECT_TRUE(lit_columns(out_images[1]).empty());
   EXPECT_EQ(lit_columns(out_images[2]), std::vector<int>{0});  // right, first column
   // Mirror image on the left boundary.
-  const auto left_images = render({{-inside.azimuth_rad, 0.0}, {-outside.azimuth_rad, 0.05}}, channels);
+  const auto left_images =
+      render({{-inside.azimuth_rad, 0.0}, {-outside.azimuth_rad, 0.05}}, channels);
   EXPECT_EQ(lit_columns(left_images[1]), std::vector<int>{0});
   EXPECT_EQ(lit_columns(left_images[0]), std::vector<int>{kWidth - 1});
 }
