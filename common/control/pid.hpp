@@ -43,6 +43,18 @@ struct PidParameters {
   double tracking_time_constant_s = 0.0;  // T_t [s], >= dt_s for kBackCalculation only
 };
 
+/// A PI controller's parameters (no derivative term) with its output range: the form every
+/// autopilot, autothrottle and rollout loop uses.
+inline PidParameters pi_parameters(double proportional_gain, double integral_gain_per_s,
+                                   double output_min, double output_max) {
+  PidParameters p;
+  p.proportional_gain = proportional_gain;
+  p.integral_gain_per_s = integral_gain_per_s;
+  p.output_min = output_min;
+  p.output_max = output_max;
+  return p;
+}
+
 class Pid {
  public:
   /// Checks every parameter (std::invalid_argument naming it) and dt_s > 0.

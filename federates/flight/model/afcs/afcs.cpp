@@ -28,12 +28,9 @@ const AfcsParameters& checked(const AfcsParameters& p) {
 control::PidParameters speed_on_elevator_pid(const SpeedOnElevatorGains& g) {
   // gamma_c = (CAS - CAS_sel) / (g tau) + integral: a speed error of g tau gamma removes itself
   // through the path change gamma (dV/dt = -g dgamma at constant thrust) in about tau.
-  control::PidParameters p;
-  p.proportional_gain = 1.0 / (kG * g.time_constant_s);
-  p.integral_gain_per_s = p.proportional_gain / g.integral_time_s;
-  p.output_min = g.min_descent_path_rad;
-  p.output_max = g.max_climb_path_rad;
-  return p;
+  const double kp = 1.0 / (kG * g.time_constant_s);
+  return control::pi_parameters(kp, kp / g.integral_time_s, g.min_descent_path_rad,
+                                g.max_climb_path_rad);
 }
 
 // Source ids for the faders: a mode enum, or a group of modes that share a law.

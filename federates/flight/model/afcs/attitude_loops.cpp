@@ -7,12 +7,7 @@ namespace fedsim::flight::afcs {
 namespace {
 
 control::PidParameters proportional_integral(double kp, double ki) {
-  control::PidParameters p;
-  p.proportional_gain = kp;
-  p.integral_gain_per_s = ki;
-  p.output_min = -1.0;
-  p.output_max = 1.0;
-  return p;
+  return control::pi_parameters(kp, ki, -1.0, 1.0);
 }
 
 double clamp_unit(double x) { return std::clamp(x, -1.0, 1.0); }

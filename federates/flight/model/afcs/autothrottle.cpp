@@ -7,23 +7,16 @@ namespace fedsim::flight::afcs {
 namespace {
 
 control::PidParameters speed_pid(const AutothrottleGains& g) {
-  control::PidParameters p;
-  p.proportional_gain = g.speed_proportional_per_mps;
-  p.integral_gain_per_s = g.speed_integral_per_mps_s;
+  control::PidParameters p = control::pi_parameters(
+      g.speed_proportional_per_mps, g.speed_integral_per_mps_s, g.idle_throttle, 1.0);
   p.derivative_gain_s = g.speed_derivative_s;
   p.derivative_filter_time_constant_s = g.derivative_filter_s;
-  p.output_min = g.idle_throttle;
-  p.output_max = 1.0;
   return p;
 }
 
 control::PidParameters climb_pid(const AutothrottleGains& g) {
-  control::PidParameters p;
-  p.proportional_gain = g.climb_rate_proportional_per_mps;
-  p.integral_gain_per_s = g.climb_rate_integral_per_mps_s;
-  p.output_min = g.idle_throttle;
-  p.output_max = 1.0;
-  return p;
+  return control::pi_parameters(g.climb_rate_proportional_per_mps,
+                                g.climb_rate_integral_per_mps_s, g.idle_throttle, 1.0);
 }
 
 }  // namespace

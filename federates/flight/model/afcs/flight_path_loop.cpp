@@ -12,12 +12,8 @@ double flight_path_angle_rad(double vertical_speed_mps, double ground_speed_mps)
 
 namespace {
 control::PidParameters path_pid(const FlightPathGains& g) {
-  control::PidParameters p;
-  p.proportional_gain = g.proportional_gain;
-  p.integral_gain_per_s = g.integral_gain_per_s;
-  p.output_min = g.pitch_min_rad;
-  p.output_max = g.pitch_max_rad;
-  return p;
+  return control::pi_parameters(g.proportional_gain, g.integral_gain_per_s, g.pitch_min_rad,
+                                g.pitch_max_rad);
 }
 }  // namespace
 

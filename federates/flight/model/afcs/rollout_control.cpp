@@ -6,20 +6,11 @@ namespace fedsim::flight::afcs {
 
 namespace {
 control::PidParameters brake_pid(const RolloutGains& g) {
-  control::PidParameters p;
-  p.proportional_gain = g.brake_proportional_per_mps2;
-  p.integral_gain_per_s = g.brake_integral_per_mps2_s;
-  p.output_min = 0.0;
-  p.output_max = 1.0;
-  return p;
+  return control::pi_parameters(g.brake_proportional_per_mps2, g.brake_integral_per_mps2_s, 0.0,
+                                1.0);
 }
 control::PidParameters rudder_pid(const RolloutGains& g) {
-  control::PidParameters p;
-  p.proportional_gain = g.rudder_scale;
-  p.integral_gain_per_s = g.rudder_integral_per_s;
-  p.output_min = -1.0;
-  p.output_max = 1.0;
-  return p;
+  return control::pi_parameters(g.rudder_scale, g.rudder_integral_per_s, -1.0, 1.0);
 }
 }  // namespace
 

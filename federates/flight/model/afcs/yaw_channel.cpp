@@ -7,14 +7,7 @@
 namespace fedsim::flight::afcs {
 
 namespace {
-control::PidParameters pi(double kp, double ki) {
-  control::PidParameters p;
-  p.proportional_gain = kp;
-  p.integral_gain_per_s = ki;
-  p.output_min = -1.0;
-  p.output_max = 1.0;
-  return p;
-}
+control::PidParameters pi(double kp, double ki) { return control::pi_parameters(kp, ki, -1.0, 1.0); }
 }  // namespace
 
 YawChannel::YawChannel(const YawChannelGains& gains, double dt_s)
