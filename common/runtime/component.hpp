@@ -80,6 +80,7 @@ class Output;
   X(AircraftState)                   \
   X(EngineState)                     \
   X(NavigationState)                 \
+  X(AutopilotState)                  \
   X(MotionPlatformState)             \
   X(ControlLoadingState)             \
   X(VisualChannelStatus)

@@ -53,6 +53,9 @@ const Topic<msg::EngineState> engine_state = frame_topic<msg::EngineState>(
     msg::TOPIC_ENGINE_STATE, qos::kState, true, "each engine's thrust, speeds, temperatures");
 const Topic<msg::NavigationState> navigation_state = frame_topic<msg::NavigationState>(
     msg::TOPIC_NAVIGATION_STATE, qos::kState, true, "radio aids, INS, GPS, flight director");
+const Topic<msg::AutopilotState> autopilot_state = frame_topic<msg::AutopilotState>(
+    msg::TOPIC_AUTOPILOT_STATE, qos::kState, true,
+    "autopilot, flight director and autothrottle modes (the FMA), FD bars, AFCS commands");
 const Topic<msg::MotionPlatformState> motion_state = frame_topic<msg::MotionPlatformState>(
     msg::TOPIC_MOTION_STATE, qos::kState, true, "motion platform pose and actuator lengths");
 const Topic<msg::ControlLoadingState> control_loading_state = frame_topic<msg::ControlLoadingState>(
@@ -64,7 +67,7 @@ const std::vector<const TopicInfo*>& all() {
   static const std::vector<const TopicInfo*> every = {
       &frame_tick.info,     &frame_done.info,       &sim_command.info,
       &federate_status.info, &pilot_controls.info,  &aircraft_state.info,
-      &engine_state.info,   &navigation_state.info, &motion_state.info,
+      &engine_state.info,   &navigation_state.info, &autopilot_state.info, &motion_state.info,
       &control_loading_state.info, &visual_status.info};
   return every;
 }

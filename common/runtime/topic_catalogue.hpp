@@ -59,6 +59,7 @@ extern const Topic<msg::PilotControls> pilot_controls;
 extern const Topic<msg::AircraftState> aircraft_state;
 extern const Topic<msg::EngineState> engine_state;
 extern const Topic<msg::NavigationState> navigation_state;
+extern const Topic<msg::AutopilotState> autopilot_state;
 extern const Topic<msg::MotionPlatformState> motion_state;
 extern const Topic<msg::ControlLoadingState> control_loading_state;
 extern const Topic<msg::VisualChannelStatus> visual_status;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "fedsim/msg/aircraft_statePubSubTypes.h"
+#include "fedsim/msg/autopilotPubSubTypes.h"
 #include "fedsim/msg/commandPubSubTypes.h"
 #include "fedsim/msg/controlsPubSubTypes.h"
 #include "fedsim/msg/framePubSubTypes.h"
@@ -31,6 +32,7 @@ FEDSIM_TOPIC_TYPE(PilotControls)
 FEDSIM_TOPIC_TYPE(AircraftState)
 FEDSIM_TOPIC_TYPE(EngineState)
 FEDSIM_TOPIC_TYPE(NavigationState)
+FEDSIM_TOPIC_TYPE(AutopilotState)
 FEDSIM_TOPIC_TYPE(MotionPlatformState)
 FEDSIM_TOPIC_TYPE(ControlLoadingState)
 FEDSIM_TOPIC_TYPE(FederateStatus)

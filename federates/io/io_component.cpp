@@ -14,7 +14,27 @@ std::uint32_t vhf_channel_khz(double frequency_mhz) {
   return static_cast<std::uint32_t>(std::lround(frequency_mhz * 1000.0 / 50.0)) * 50u;
 }
 
-void to_message(const ControlInputs& in, msg::PilotControls& out) {
+namespace {
+static_assert(kMcpButtonCount == msg::MCP_BUTTON_COUNT);
+static_assert(static_cast<int>(Channel::kMcpApp) - static_cast<int>(Channel::kMcpCmd) == msg::MCP_APP);
+static_assert(static_cast<int>(Channel::kToga) - static_cast<int>(Channel::kMcpCmd) == msg::MCP_TOGA);
+
+void fill_mcp(const ControlInputs& in, const McpButtonCounter& buttons, msg::McpPanel& mcp) {
+  for (int i = 0; i < kMcpButtonCount; ++i) {
+    mcp.presses()[static_cast<std::size_t>(i)] = buttons.presses()[static_cast<std::size_t>(i)];
+  }
+  mcp.heading_true_rad(in[Channel::kMcpHeadingDeg] * units::kDegToRad);
+  mcp.altitude_msl_m(in[Channel::kMcpAltitudeFt] * units::kFtToM);
+  mcp.vertical_speed_mps(in[Channel::kMcpVerticalSpeedFpm] * units::kFtToM / 60.0);
+  mcp.airspeed_cas_mps(in[Channel::kMcpSpeedKt] * units::kKtToMps);
+  mcp.bank_limit_rad(in[Channel::kMcpBankLimitDeg] * units::kDegToRad);
+  mcp.flight_director_on(in[Channel::kFlightDirector] >= 0.5);
+  mcp.autothrottle_armed(in[Channel::kAutothrottleArm] >= 0.5);
+  mcp.autobrake(static_cast<std::uint16_t>(std::lround(in[Channel::kAutobrake])));
+}
+}  // namespace
+
+void to_message(const ControlInputs& in, const McpButtonCounter& buttons, msg::PilotControls& out) {
   out.elevator(static_cast<float>(in[Channel::kElevator]));
   out.aileron(static_cast<float>(in[Channel::kAileron]));
   out.rudder(static_cast<float>(in[Channel::kRudder]));
@@ -38,6 +58,11 @@ void to_message(const ControlInputs& in, msg::PilotControls& out) {
   radios.adf_khz(static_cast<std::uint32_t>(std::lround(in[Channel::kAdfKhz])));
   radios.obs1_rad(static_cast<float>(in[Channel::kObs1Deg] * units::kDegToRad));
   radios.obs2_rad(static_cast<float>(in[Channel::kObs2Deg] * units::kDegToRad));
+  fill_mcp(in, buttons, out.mcp());
+  std::uint32_t discretes = out.discretes() & ~(msg::DISCRETE_AUTOPILOT_DISCONNECT | msg::DISCRETE_TOGA);
+  if (buttons.held(Channel::kApDisconnect)) discretes |= msg::DISCRETE_AUTOPILOT_DISCONNECT;
+  if (buttons.held(Channel::kToga)) discretes |= msg::DISCRETE_TOGA;
+  out.discretes(discretes);
 }
 
 IoComponent::IoComponent(std::string name, std::unique_ptr<InputSource> source, int aircraft_id,
@@ -51,7 +76,8 @@ IoComponent::IoComponent(std::string name, std::unique_ptr<InputSource> source, 
 
 void IoComponent::step(const runtime::FrameContext& frame) {
   source_->sample(frame.sim_time_s, controls_);
-  to_message(controls_, sample_);
+  mcp_buttons_.update(controls_);
+  to_message(controls_, mcp_buttons_, sample_);
   sample_.stamp(frame.stamp());
   pilot_controls_.write(sample_);
 }

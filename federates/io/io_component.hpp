@@ -14,8 +14,9 @@ namespace fedsim::io {
 
 /// A VHF NAV frequency dialled in MHz as the 50 kHz channel it selects [kHz].
 std::uint32_t vhf_channel_khz(double frequency_mhz);
-/// The pilot controls message of a set of control channels (no allocation).
-void to_message(const ControlInputs& in, msg::PilotControls& out);
+/// The pilot controls message of a set of control channels and the MCP's press counts (no
+/// allocation). The autopilot-disconnect and TO/GA discretes are set while their buttons are held.
+void to_message(const ControlInputs& in, const McpButtonCounter& buttons, msg::PilotControls& out);
 
 class IoComponent final : public runtime::Component {
  public:
@@ -31,6 +32,7 @@ class IoComponent final : public runtime::Component {
 
   std::unique_ptr<InputSource> source_;
   ControlInputs controls_ = default_controls();
+  McpButtonCounter mcp_buttons_;
   msg::PilotControls sample_;
 };
 

@@ -2,6 +2,7 @@
 #include "common/util/cli_checks.hpp"
 
 #include "common/units/units.hpp"
+#include "nav/model/radio/approach_geometry.hpp"
 
 #include <cmath>
 #include <limits>
@@ -44,6 +45,21 @@ msg::MarkerBeaconKind to_message(MarkerBeacon b) {
 
 std::string bounded(std::string_view s) { return std::string(s.substr(0, 8)); }
 
+// What an autopilot needs to turn the deviations into distances (0 when not valid): the
+// localizer's full-scale angle, the distances from both antennas and, along the course, to the
+// threshold (the distance from the antenna projected on the course line, less the antenna's
+// distance to the threshold).
+void fill_ils_geometry(const NavReading& r, msg::NavReceiver& out) {
+  const bool localizer = r.valid() && r.signal == NavSignal::kLocalizer && r.approach != nullptr;
+  const LocalizerReading& loc = r.localizer;
+  out.localizer_half_width_rad(localizer ? loc.course_half_width_rad : 0.0);
+  out.localizer_distance_m(localizer ? loc.distance_from_antenna_m : 0.0);
+  out.threshold_distance_m(localizer ? loc.distance_from_antenna_m * std::cos(loc.angle_off_course_rad) -
+                                           approach_geometry(*r.approach).threshold_along_m
+                                     : 0.0);
+  out.glideslope_distance_m(localizer && r.glide_slope.valid() ? r.glide_slope.distance_from_antenna_m : 0.0);
+}
+
 void fill_receiver(const NavReading& r, const NavTuning& tuning, msg::NavReceiver& out) {
   out.frequency_khz(tuning.frequency_khz);
   out.obs_course_magnetic_rad(tuning.obs_course_magnetic_rad);
@@ -61,6 +77,7 @@ void fill_receiver(const NavReading& r, const NavTuning& tuning, msg::NavReceive
   out.glideslope_status(to_message(r.glide_slope.status));
   out.glideslope_deviation(r.glide_slope.valid() ? r.glide_slope.deviation : 0.0);
   out.glide_path_angle_rad(r.glide_slope.valid() ? r.glide_slope.glide_path_angle_rad : 0.0);
+  fill_ils_geometry(r, out);
   out.dme_status(to_message(r.dme.status));
   out.dme_ident(bounded(r.dme.ident));
   out.dme_slant_range_m(r.dme.valid() ? r.dme.slant_range_m : -1.0);

@@ -130,7 +130,10 @@ void fill_aircraft_state(const AircraftOutputs& out, const AircraftControls& flo
   s.speedbrake_norm(out.speedbrake_norm);
   s.spoiler_norm(out.spoiler_norm);
   auto& c = s.controls();
-  c.elevator(flown.elevator_command());
+  // The elevator as the surface is commanded: the column plus the trim where the trim is (a
+  // trim system moves at its rate towards the trim command, so the command would mislead).
+  c.elevator(std::clamp(flown.elevator + out.pitch_trim_norm, -1.0, 1.0));
+  c.pitch_trim(out.pitch_trim_norm);
   c.aileron(flown.aileron_command());
   c.rudder(flown.rudder_command());
   for (std::size_t e = 0; e < c.throttle().size(); ++e) c.throttle()[e] = flown.throttle[e];

@@ -11,12 +11,24 @@ FlightComponent::FlightComponent(std::string name, FlightSetup setup, std::strin
       trim_base_(setup_.start.controls) {
   state_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
   engine_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
+  if (setup_.autopilot) {
+    setup_.autopilot->validate();
+    gear_ = afcs::GearGeometry::of(setup_.model->pack());
+    // The ILS arrives at the state's own QoS (lockstep_data in lockstep, like the state).
+    navigation_state_ = &reads(runtime::topics::navigation_state, state_qos);
+    autopilot_state_ = &writes(runtime::topics::autopilot_state, state_qos);
+    autopilot_sample_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
+  }
 }
 
 void FlightComponent::on_command(const msg::SimCommand& command) {
   try {
+    if (apply_autopilot_failure(command)) return;
     const std::string what = apply_command(command, *setup_.model, setup_.runways);
-    if (command.kind() == msg::COMMAND_REPOSITION) trim_base_ = setup_.model->controls();
+    if (command.kind() == msg::COMMAND_REPOSITION) {
+      trim_base_ = setup_.model->controls();
+      if (afcs_) afcs_->reset();  // a new place: the autopilot starts disengaged
+    }
     if (!what.empty()) {
       log().info("command seq={} from={}: {}", command.sequence_number(),
                  command.issuer().to_string(), what);
@@ -24,6 +36,20 @@ void FlightComponent::on_command(const msg::SimCommand& command) {
   } catch (const std::exception& e) {
     log().error("command seq={} rejected: {}", command.sequence_number(), e.what());
   }
+}
+
+bool FlightComponent::apply_autopilot_failure(const msg::SimCommand& command) {
+  if (command.kind() != msg::COMMAND_FAILURE) return false;
+  const std::string target = command.target().to_string();
+  bool* failed = target == "autopilot"      ? &afcs_failures_.autopilot
+                 : target == "autothrottle" ? &afcs_failures_.autothrottle
+                                            : nullptr;
+  if (failed == nullptr) return false;
+  if (!setup_.autopilot) throw std::invalid_argument(target + ": this flight federate hosts no autopilot (--autopilot)");
+  *failed = command.failure().active();
+  log().info("command seq={} from={}: {} {}", command.sequence_number(), command.issuer().to_string(), target,
+             *failed ? "failed" : "restored");
+  return true;
 }
 
 void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
@@ -47,14 +73,71 @@ void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
   }
 }
 
+void FlightComponent::take_mcp(const runtime::FrameContext& frame) {
+  const msg::PilotControls* sample = pilot_controls_.latest();
+  if (sample == nullptr || pilot_controls_.updates() == mcp_seen_) return;
+  mcp_seen_ = pilot_controls_.updates();
+  const msg::PilotControls& pilot = *sample;
+  if (const auto problem = check_mcp(pilot.mcp())) {
+    report_fault("input_rejected", "frame " + std::to_string(frame.frame) + ": pilot_controls of frame " +
+                                       std::to_string(pilot.stamp().frame()) + " " + *problem +
+                                       " (kept the previous MCP; its presses are ignored)");
+    return;
+  }
+  last_valid_mcp_ = pilot.mcp();
+  have_valid_mcp_ = true;
+  pending_presses_ |= mcp_presses_.presses(pilot.mcp());
+}
+
+afcs::AfcsIlsSignals FlightComponent::nav1_ils() const {
+  const msg::NavigationState* nav = navigation_state_->latest();
+  if (nav == nullptr || nav->aircraft_id() != setup_.aircraft_id) return {};
+  return ils_signals_from_receiver(nav->nav()[0]);
+}
+
+void FlightComponent::log_transition(const afcs::ModeTransition& t) {
+  ++transitions_;
+  log().info("AFCS t={:.2f}s {}: {} -> {} ({})", t.time_s, afcs::to_string(t.channel),
+             t.from.empty() ? "-" : t.from, t.to.empty() ? "-" : t.to, t.reason);
+}
+
+void FlightComponent::fly_autopilot(const runtime::FrameContext& frame) {
+  if (!afcs_ || std::abs(afcs_dt_s_ - frame.dt_s) > 1e-9) {
+    if (afcs_) log().warn("frame period changed from {} s to {} s: the AFCS restarts", afcs_dt_s_, frame.dt_s);
+    afcs_ = std::make_unique<afcs::Afcs>(*setup_.autopilot, frame.dt_s,
+                                         [this](const afcs::ModeTransition& t) { log_transition(t); });
+    afcs_dt_s_ = frame.dt_s;
+  }
+  AircraftModel& model = *setup_.model;
+  const AircraftOutputs& o = model.outputs();
+  const AircraftControls pilot = model.controls();
+  afcs::AfcsInputs in;
+  in.aircraft = afcs::afcs_aircraft_state(o, model.pack(), gear_, pilot);
+  in.ils = nav1_ils();
+  in.buttons = pending_presses_;
+  pending_presses_ = {};
+  in.mcp = have_valid_mcp_ ? mcp_selections(last_valid_mcp_) : mcp_before_first_sample(in.aircraft);
+  in.failures = afcs_failures_;
+  const afcs::AfcsOutputs& out = afcs_->step(in);
+  model.set_controls(afcs::apply_afcs_outputs(out, pilot, o.pitch_trim_norm));
+  // Trim switches are momentary: where the auto-trim leaves the trim, the pilot finds it.
+  if (out.autopilot_engaged) trim_base_.elevator_trim = o.pitch_trim_norm;
+}
+
 void FlightComponent::step(const runtime::FrameContext& frame) {
   AircraftModel& model = *setup_.model;
   if (frame.resetting()) {
     model.reset(setup_.start.initial, setup_.start.controls);
     trim_base_ = setup_.start.controls;
     dropped_steps_seen_ = 0;
+    if (afcs_) afcs_->reset();
+    pending_presses_ = {};
   } else if (frame.running()) {
     apply_pilot_controls(frame);
+    if (setup_.autopilot) {
+      take_mcp(frame);
+      fly_autopilot(frame);
+    }
     model.step(frame.dt_s);
     const std::uint64_t dropped = model.outputs().dropped_steps;
     if (dropped != dropped_steps_seen_) {
@@ -63,6 +146,8 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
                                     " integration step(s) that gave a non-finite state");
       dropped_steps_seen_ = dropped;
     }
+  } else if (setup_.autopilot) {
+    take_mcp(frame);  // frozen: the panel's presses wait for the next RUN frame
   }
   write_state(frame);
 }
@@ -76,6 +161,11 @@ void FlightComponent::write_state(const runtime::FrameContext& frame) {
     fill_engine_state(engines[i], i, engine_);
     engine_.stamp(frame.end_stamp());
     engine_state_.write(engine_);
+  }
+  if (autopilot_state_ != nullptr) {
+    if (afcs_) fill_autopilot_state(*afcs_, transitions_, autopilot_sample_);
+    autopilot_sample_.stamp(frame.end_stamp());
+    autopilot_state_->write(autopilot_sample_);
   }
 }
 

@@ -3,16 +3,25 @@
 //
 // Run states: RUN integrates one frame period; FREEZE holds the aircraft and keeps writing;
 // RESET returns to the start state. Commands: reposition (point, runway threshold, approach
-// gate), weather, engine failures. Faults (counted, in the federate status and the summary):
-// "numerical" - the model dropped a step that would have produced a non-finite state;
-// "input_rejected" - a pilot-controls sample with a non-finite or out-of-range value (the
-// previous controls are kept).
+// gate), weather, failures (engine1..4, autopilot, autothrottle). Faults (counted, in the
+// federate status and the summary): "numerical" - the model dropped a step that would have
+// produced a non-finite state; "input_rejected" - a pilot-controls sample with a non-finite or
+// out-of-range value (the previous controls are kept), or a bad MCP panel (the previous one is
+// kept).
+//
+// With the autopilot hosted (--autopilot, model/afcs/README.md "Where the AFCS runs"), each RUN
+// frame, after the pilot's controls are set and before the model steps: the AFCS reads the
+// aircraft (the model's outputs), NAV1's ILS readings (fedsim/navigation_state of frame N-1),
+// the MCP (the panel in fedsim/pilot_controls), steps, and its engaged channels replace the
+// pilot's; every mode change is logged; fedsim/autopilot_state carries the FMA every frame.
 #pragma once
 
 #include "common/airports/runway_table.hpp"
 #include "common/runtime/component.hpp"
+#include "flight/federate/autopilot_adapter.hpp"
 #include "flight/federate/flight_adapter.hpp"
 #include "flight/federate/start_options.hpp"
+#include "flight/model/afcs/model_coupling.hpp"
 
 #include <memory>
 
@@ -25,6 +34,8 @@ struct FlightSetup {
   RunwayTable runways;
   ControlsMode controls_mode = ControlsMode::kAbsolute;
   int aircraft_id = 0;
+  /// Host the AFCS (autopilot, flight director, autothrottle) with these parameters.
+  std::optional<afcs::AfcsParameters> autopilot;
 };
 
 class FlightComponent final : public runtime::Component {
@@ -36,9 +47,16 @@ class FlightComponent final : public runtime::Component {
   void step(const runtime::FrameContext& frame) override;
 
   const AircraftModel& model() const { return *setup_.model; }
+  /// The hosted AFCS (nullptr without --autopilot, or before the first RUN frame).
+  const afcs::Afcs* autopilot() const { return afcs_.get(); }
 
  private:
   void apply_pilot_controls(const runtime::FrameContext& frame);
+  void take_mcp(const runtime::FrameContext& frame);
+  void fly_autopilot(const runtime::FrameContext& frame);
+  afcs::AfcsIlsSignals nav1_ils() const;
+  void log_transition(const afcs::ModeTransition& t);
+  bool apply_autopilot_failure(const msg::SimCommand& command);
   void write_state(const runtime::FrameContext& frame);
 
   // ---- Ports -------------------------------------------------------------------------------
@@ -48,6 +66,11 @@ class FlightComponent final : public runtime::Component {
   runtime::Output<msg::AircraftState>& aircraft_state_;
   // writes fedsim/engine_state every frame, one sample (instance) per engine.
   runtime::Output<msg::EngineState>& engine_state_;
+  // With the autopilot only (nullptr otherwise):
+  // reads  fedsim/navigation_state: lockstep input, NAV1's ILS readings of frame N-1.
+  runtime::Input<msg::NavigationState>* navigation_state_ = nullptr;
+  // writes fedsim/autopilot_state every frame (the FMA, FD bars, AFCS commands).
+  runtime::Output<msg::AutopilotState>* autopilot_state_ = nullptr;
 
   FlightSetup setup_;
   AircraftControls trim_base_;  // relative controls fly about the latest trim
@@ -57,6 +80,19 @@ class FlightComponent final : public runtime::Component {
   std::uint64_t dropped_steps_seen_ = 0;
   msg::AircraftState state_;
   msg::EngineState engine_;
+
+  // The hosted AFCS (built in the first RUN frame, at the federation's frame period).
+  std::unique_ptr<afcs::Afcs> afcs_;
+  double afcs_dt_s_ = 0.0;
+  afcs::GearGeometry gear_;
+  McpPressTracker mcp_presses_;
+  std::uint64_t mcp_seen_ = 0;           // pilot_controls_.updates() when the MCP was last read
+  afcs::McpButtons pending_presses_;     // seen in a sample, pressed in the next RUN frame
+  msg::McpPanel last_valid_mcp_;
+  bool have_valid_mcp_ = false;
+  afcs::AfcsFailures afcs_failures_;
+  std::uint32_t transitions_ = 0;
+  msg::AutopilotState autopilot_sample_;
 };
 
 }  // namespace fedsim::flight

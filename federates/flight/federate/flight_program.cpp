@@ -46,6 +46,10 @@ void add_flight_options(CLI::App& app, FlightOptions& o) {
       ->capture_default_str();
   app.add_option("--state-qos", o.state_qos,
                  "QoS profile of fedsim/aircraft_state (default: the catalogue's, state)");
+  app.add_flag("--autopilot", o.autopilot,
+               "host the AFCS (autopilot, flight director, autothrottle, autoland; gains designed for "
+               "the 737 pack): reads the MCP in fedsim/pilot_controls and NAV1's ILS in "
+               "fedsim/navigation_state, writes fedsim/autopilot_state");
   app.add_option("--aircraft-id", o.aircraft_id, "aircraft id (topic key)")
       ->check(fedsim::util::FiniteRange(0, 65535))
       ->capture_default_str();
@@ -76,6 +80,7 @@ FlightSetup prepare_flight(const FlightOptions& o) {
   setup.runways = RunwayTable::load_default();
   setup.controls_mode = o.controls == "relative" ? ControlsMode::kRelative : ControlsMode::kAbsolute;
   setup.aircraft_id = o.aircraft_id;
+  if (o.autopilot) setup.autopilot = afcs::AfcsParameters{};
   return setup;
 }
 
@@ -91,8 +96,8 @@ std::unique_ptr<FlightComponent> make_flight_component(const std::string& name,
   require_trimmed(setup);
   const std::optional<TrimResult> trim = setup.start.trim;
   auto component = std::make_unique<FlightComponent>(name, std::move(setup), o.state_qos);
-  component->log().info("aircraft={} earth={} integrator={} substeps={} controls={}", o.aircraft,
-                        o.earth, o.integrator, o.substeps, o.controls);
+  component->log().info("aircraft={} earth={} integrator={} substeps={} controls={} autopilot={}", o.aircraft,
+                        o.earth, o.integrator, o.substeps, o.controls, o.autopilot ? "on" : "off");
   if (trim) component->log().info("trim {}", trim_json(*trim));
   return component;
 }

@@ -27,6 +27,7 @@ struct FlightOptions {
   std::string controls = "absolute";  // --controls absolute|relative
   std::string state_qos;           // --state-qos ("" = the catalogue's)
   int aircraft_id = 0;             // --aircraft-id
+  bool autopilot = false;          // --autopilot: host the AFCS (model/afcs)
 };
 
 /// Adds every option above to `app`.

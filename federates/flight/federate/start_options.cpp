@@ -44,6 +44,19 @@ void add_start_options(CLI::App& app, StartOptions& o) {
   app.add_option("--runway-elevation-m", o.runway_elevation_m, "terrain plane above MSL [m]");
   app.add_option("--airport", o.airport, "ground start: airport (ICAO), with --runway");
   app.add_option("--runway", o.runway, "ground start: runway end, e.g. 28R");
+  app.add_option("--approach-nm", o.approach_nm,
+                 "with --airport/--runway: start in level flight this far before the threshold "
+                 "(along the extended centreline) at --alt-ft and --kcas/--ktas [NM]")
+      ->check(fedsim::util::FiniteRange(0.0, 50.0));
+  app.add_option("--approach-offset-nm", o.approach_offset_nm,
+                 "approach start: left (+) or right (-) of the extended centreline [NM]")
+      ->check(fedsim::util::FiniteRange(-10.0, 10.0))
+      ->capture_default_str();
+  app.add_option("--intercept-deg", o.intercept_deg,
+                 "approach start: heading towards the centreline, degrees off the runway heading")
+      ->check(fedsim::util::FiniteRange(0.0, 90.0))
+      ->capture_default_str();
+  app.add_flag("--gear-down", o.gear_down, "a flight trim with the gear down");
 }
 
 namespace {
@@ -64,9 +77,43 @@ double ground_throttle(const StartOptions& o, bool ground_start) {
 }
 }  // namespace
 
+namespace {
+// --approach-nm with --airport/--runway: level flight before the runway (reposition.hpp).
+StartState approach_start_state(const StartOptions& o, AircraftModel& model) {
+  if (o.airport.empty() || o.runway.empty()) {
+    throw std::invalid_argument("--approach-nm needs --airport and --runway (the runway approached)");
+  }
+  if (!o.trim_kind.empty() && o.trim_kind != "level") {
+    throw std::invalid_argument("--approach-nm starts in level flight: --trim " + o.trim_kind + " does not apply");
+  }
+  if ((o.ktas > 0) == (o.kcas > 0)) {
+    throw std::invalid_argument("an approach start needs exactly one of --ktas or --kcas");
+  }
+  const RunwayEnd end = RunwayTable::load_default().at(o.airport, o.runway);
+  InterceptStart s;
+  s.distance_m = *o.approach_nm * units::kNmToM;
+  s.left_m = o.approach_offset_nm * units::kNmToM;
+  s.intercept_rad = o.intercept_deg * units::kDegToRad;
+  s.altitude_msl_m = o.alt_ft * units::kFtToM;
+  s.airspeed_is_cas = o.kcas > 0;
+  s.airspeed_mps = (o.kcas > 0 ? o.kcas : o.ktas) * units::kKtToMps;
+  AircraftControls configuration = model.controls();
+  configuration.flaps = o.flaps;
+  configuration.gear_down = o.gear_down;
+  model.set_controls(configuration);
+  StartState start;
+  const TrimResult trim = reposition_to_intercept(model, runway_of(end), s);
+  start.trim = trim;
+  start.initial = trim.initial_conditions;
+  start.controls = trim.controls;
+  return start;
+}
+}  // namespace
+
 StartState establish_start(const StartOptions& o, AircraftModel& model) {
   StartState start;
-  const bool ground_start = o.ic_file.empty() &&
+  const bool approach_start = o.ic_file.empty() && o.approach_nm.has_value();
+  const bool ground_start = o.ic_file.empty() && !approach_start &&
                             (!o.airport.empty() || !o.runway.empty() || o.trim_kind == "ground");
   const double throttle = ground_throttle(o, ground_start);
   if (!o.ic_file.empty()) {
@@ -79,6 +126,7 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
     start.controls = file.controls;
     return start;
   }
+  if (approach_start) return approach_start_state(o, model);
   if (!o.airport.empty() || !o.runway.empty()) {
     const RunwayEnd end = RunwayTable::load_default().at(o.airport, o.runway);
     Runway runway;
@@ -108,7 +156,7 @@ StartState establish_start(const StartOptions& o, AircraftModel& model) {
   request.flight_path_rad = o.gamma_deg * units::kDegToRad;
   request.bank_rad = o.bank_deg * units::kDegToRad;
   request.controls.flaps = o.flaps;
-  request.controls.gear_down = request.kind == TrimKind::kGround;
+  request.controls.gear_down = request.kind == TrimKind::kGround || o.gear_down;
   request.ground_throttle = throttle;
   const TrimResult trim = Trim(model).solve(request);
   start.trim = trim;

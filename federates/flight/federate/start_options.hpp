@@ -27,6 +27,11 @@ struct StartOptions {
   std::optional<double> throttle;  // --throttle 0..1: engines' throttle on a ground start
   std::optional<double> runway_elevation_m;  // --runway-elevation-m
   std::string airport, runway;     // --airport/--runway: start at that threshold (ground trim)
+  // --approach-nm with --airport/--runway: start in level flight before that runway instead.
+  std::optional<double> approach_nm;   // --approach-nm: before the threshold along the centreline
+  double approach_offset_nm = 0.0;     // --approach-offset-nm: left (+) / right (-) of it
+  double intercept_deg = 0.0;          // --intercept-deg: heading towards the centreline
+  bool gear_down = false;              // --gear-down: the gear down in a flight trim
 };
 
 /// Adds the options above to `app`.

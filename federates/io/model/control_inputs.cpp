@@ -16,6 +16,13 @@ constexpr std::array<ChannelInfo, kChannelCount> kChannels{{
     {"nosewheel_steering", -1, 1},
     {"nav1_mhz", 0, 117.95}, {"nav2_mhz", 0, 117.95}, {"adf_khz", 0, 1750},
     {"obs1_deg", 0, 360}, {"obs2_deg", 0, 360},
+    {"mcp_heading_deg", 0, 360}, {"mcp_altitude_ft", -1000, 50000}, {"mcp_vs_fpm", -6000, 6000},
+    {"mcp_speed_kt", 80, 380}, {"mcp_bank_limit_deg", 5, 30},
+    {"fd", 0, 1}, {"at_arm", 0, 1}, {"autobrake", 0, 4},
+    {"mcp_cmd", 0, 1}, {"mcp_cws", 0, 1}, {"ap_disconnect", 0, 1}, {"at_disconnect", 0, 1},
+    {"mcp_hdg_sel", 0, 1}, {"mcp_wlv", 0, 1}, {"mcp_vor_loc", 0, 1}, {"mcp_app", 0, 1},
+    {"mcp_alt_hld", 0, 1}, {"mcp_vs", 0, 1}, {"mcp_lvl_chg", 0, 1}, {"mcp_speed", 0, 1},
+    {"mcp_n1", 0, 1}, {"toga", 0, 1},
 }};
 
 std::vector<Channel> engine_group(Channel first) {
@@ -58,7 +65,23 @@ ControlInputs default_controls() {
   for (Channel ch : engine_group(Channel::kMixture1)) c[ch] = 1.0;
   for (Channel ch : engine_group(Channel::kPropeller1)) c[ch] = 1.0;
   c[Channel::kGearDown] = 1.0;
+  c[Channel::kMcpSpeedKt] = 150.0;
+  c[Channel::kMcpBankLimitDeg] = 25.0;
+  c[Channel::kFlightDirector] = 1.0;
   return c;
+}
+
+void McpButtonCounter::update(const ControlInputs& controls) {
+  for (int i = 0; i < kMcpButtonCount; ++i) {
+    const bool now = controls[static_cast<Channel>(static_cast<int>(Channel::kMcpCmd) + i)] >= 0.5;
+    if (now && !held_[static_cast<std::size_t>(i)]) ++presses_[static_cast<std::size_t>(i)];
+    held_[static_cast<std::size_t>(i)] = now;
+  }
+}
+
+bool McpButtonCounter::held(Channel button) const {
+  const int i = static_cast<int>(button) - static_cast<int>(Channel::kMcpCmd);
+  return i >= 0 && i < kMcpButtonCount && held_[static_cast<std::size_t>(i)];
 }
 
 }  // namespace fedsim::io

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,9 +27,22 @@ enum class Channel {
   kNav1Mhz, kNav2Mhz,                                 // 0..117.95 MHz
   kAdfKhz,                                            // 0..1750 kHz
   kObs1Deg, kObs2Deg,                                 // 0..360 deg, magnetic
+  // The autopilot's mode control panel (MCP), in the edges' units: selections...
+  kMcpHeadingDeg,                                     // 0..360 deg, TRUE (fedsim's headings are)
+  kMcpAltitudeFt,                                     // -1000..50000 ft MSL
+  kMcpVerticalSpeedFpm,                               // -6000..6000 ft/min, + up
+  kMcpSpeedKt,                                        // 80..380 kt calibrated
+  kMcpBankLimitDeg,                                   // 5..30 deg
+  kFlightDirector, kAutothrottleArm,                  // switches: on while >= 0.5
+  kAutobrake,                                         // 0 off, 1, 2, 3, 4 = MAX (rounded)
+  // ...and buttons, in the order of controls.idl's MCP_* indices: held while >= 0.5, each
+  // rise from below 0.5 is one press (a profile steps 0 -> 1 -> 0 to press).
+  kMcpCmd, kMcpCws, kApDisconnect, kAtDisconnect, kMcpHdgSel, kMcpWlv, kMcpVorLoc, kMcpApp,
+  kMcpAltHld, kMcpVs, kMcpLvlChg, kMcpSpeed, kMcpN1, kToga,
   kCount
 };
 constexpr int kChannelCount = static_cast<int>(Channel::kCount);
+constexpr int kMcpButtonCount = static_cast<int>(Channel::kToga) - static_cast<int>(Channel::kMcpCmd) + 1;
 
 struct ChannelInfo {
   std::string_view name;  // as written in profile files
@@ -54,7 +68,22 @@ struct ControlInputs {
   void clamp();
 };
 
-/// A sensible cockpit at rest: controls centred, mixture and propeller full forward, gear down.
+/// A sensible cockpit at rest: controls centred, mixture and propeller full forward, gear down;
+/// the MCP at heading 000, 0 ft, 0 ft/min, 150 kt, bank limit 25 deg, FD on, A/T and autobrake off.
 ControlInputs default_controls();
+
+/// Counts the presses of the MCP buttons: a button channel rising to >= 0.5 is one press.
+class McpButtonCounter {
+ public:
+  void update(const ControlInputs& controls);
+  /// Presses of each button so far (index = button channel - kMcpCmd = controls.idl's MCP_*).
+  const std::array<std::uint32_t, kMcpButtonCount>& presses() const { return presses_; }
+  /// Whether a button is held in the latest update.
+  bool held(Channel button) const;
+
+ private:
+  std::array<std::uint32_t, kMcpButtonCount> presses_{};
+  std::array<bool, kMcpButtonCount> held_{};
+};
 
 }  // namespace fedsim::io

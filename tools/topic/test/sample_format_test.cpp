@@ -204,10 +204,10 @@ TEST(CsvLayout, FlattensEveryFieldWithSimTimeFirst) {
     EXPECT_NE(std::find(cols.begin(), cols.end(), name), cols.end()) << name;
   }
   // 1 time + id + 2 stamp + 4 + 3 ecef + 3 + 3 + 4 + 3 + 4*3 + 3 body-dot + load factor
-  // + 4 ground kinematics + 11+3 air + 5 surfaces + 3 more surfaces + 13 flown controls
+  // + 4 ground kinematics + 11+3 air + 5 surfaces + 3 more surfaces + 14 flown controls (incl. the trim position)
   // + 6 aero + stalled + 3 force + 3 moment + 3 mass + 3 cg + 1 engines + on_ground
   // + weight on wheels + gear force + gear_count + 8*3 gear + dropped steps + rotating earth
-  EXPECT_EQ(cols.size(), 1u + 1 + 2 + 4 + 3 + 3 + 3 + 4 + 3 + 12 + 3 + 1 + 4 + 14 + 5 + 3 + 13 +
+  EXPECT_EQ(cols.size(), 1u + 1 + 2 + 4 + 3 + 3 + 3 + 4 + 3 + 12 + 3 + 1 + 4 + 14 + 5 + 3 + 14 +
                              6 + 1 + 3 + 3 + 3 + 3 + 1 + 1 + 1 + 1 + 1 + 24 + 1 + 1);
   EXPECT_EQ(layout.header().rfind("sim_time_s,aircraft_id,stamp.frame,stamp.sim_time_s,", 0), 0u);
 

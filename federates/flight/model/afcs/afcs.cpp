@@ -97,6 +97,8 @@ const AfcsOutputs& Afcs::step(const AfcsInputs& in) {
   if (!input_problem_.empty()) {
     ModeConditions bad;
     bad.inputs_valid = false;
+    bad.autopilot_failed = in.failures.autopilot;
+    bad.autothrottle_failed = in.failures.autothrottle;
     logic_.update(std::isfinite(in.aircraft.time_s) ? in.aircraft.time_s : 0.0, in.buttons, in.mcp, bad);
     hold_after_bad_sample();
     return outputs_;
@@ -172,6 +174,8 @@ ModeConditions Afcs::conditions(const AfcsInputs& in, const Guidance& g) const {
   const ModeState& m = logic_.state();
   ModeConditions c;
   c.inputs_valid = true;
+  c.autopilot_failed = in.failures.autopilot;
+  c.autothrottle_failed = in.failures.autothrottle;
   c.on_ground = a.main_gear_on_ground;
   c.stopped = a.main_gear_on_ground && a.ground_speed_mps < p.rollout.taxi_speed_mps;
   c.localizer_valid = g.localizer_valid;

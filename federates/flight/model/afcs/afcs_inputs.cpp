@@ -78,4 +78,22 @@ std::string_view afcs_input_problem(const AfcsInputs& inputs) {
   return mcp_problem(inputs.mcp);
 }
 
+McpButtons& operator|=(McpButtons& a, const McpButtons& b) {
+  a.autopilot_engage |= b.autopilot_engage;
+  a.control_wheel_steering |= b.control_wheel_steering;
+  a.autopilot_disconnect |= b.autopilot_disconnect;
+  a.autothrottle_disconnect |= b.autothrottle_disconnect;
+  a.heading_select |= b.heading_select;
+  a.wing_level |= b.wing_level;
+  a.vor_localizer |= b.vor_localizer;
+  a.approach |= b.approach;
+  a.altitude_hold |= b.altitude_hold;
+  a.vertical_speed |= b.vertical_speed;
+  a.level_change |= b.level_change;
+  a.speed |= b.speed;
+  a.thrust |= b.thrust;
+  a.takeoff_go_around |= b.takeoff_go_around;
+  return a;
+}
+
 }  // namespace fedsim::flight::afcs

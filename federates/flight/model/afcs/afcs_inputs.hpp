@@ -78,6 +78,9 @@ struct McpButtons {
   bool takeoff_go_around = false;      // "TO/GA" on the thrust levers
 };
 
+/// Every button pressed in either (presses gathered over frames).
+McpButtons& operator|=(McpButtons& a, const McpButtons& b);
+
 /// Mode-control-panel selections (held values).
 struct McpSelections {
   double heading_true_rad = 0.0;       // [rad], any finite (wrapped)
@@ -92,11 +95,19 @@ struct McpSelections {
   double pilot_roll_input = 0.0;       // CWS wheel force, -1..1, + right (0: hands off)
 };
 
+/// Failures the instructor sets: a failed autopilot (autothrottle) disengages with its alert and
+/// refuses engagement until restored.
+struct AfcsFailures {
+  bool autopilot = false;
+  bool autothrottle = false;
+};
+
 struct AfcsInputs {
   AfcsAircraftState aircraft;
   AfcsIlsSignals ils;
   McpButtons buttons;
   McpSelections mcp;
+  AfcsFailures failures;
 };
 
 /// The first field of `inputs` that is not finite or outside its stated range, named as

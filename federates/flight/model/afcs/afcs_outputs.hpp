@@ -29,6 +29,8 @@ enum AfcsAlert : std::uint32_t {
   kAlertInputInvalid = 1u << 4,           // a non-finite or out-of-range input sample
   kAlertEngageRefused = 1u << 5,          // engagement conditions not met (on ground, attitude)
   kAlertAttitudeLimit = 1u << 6,          // bank or pitch beyond the autopilot's authority
+  kAlertAutopilotFailed = 1u << 7,        // the autopilot failed (instructor): disengaged, refuses CMD
+  kAlertAutothrottleFailed = 1u << 8,     // the autothrottle failed (instructor)
 };
 
 /// The flight-mode annunciator.

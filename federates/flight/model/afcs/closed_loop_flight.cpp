@@ -1,5 +1,8 @@
 #include "flight/model/afcs/closed_loop_flight.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "flight/model/afcs/lateral_guidance.hpp"
 #include "flight/model/scenario/reposition.hpp"
 #include "nav/model/radio/glide_slope_receiver.hpp"
@@ -34,7 +37,12 @@ ClosedLoopFlight::ClosedLoopFlight(AircraftPack pack, nav::IlsApproach approach,
       gear_(GearGeometry::of(pack_)),
       model_(std::make_unique<AircraftModel>(pack_, options_.model)),
       afcs_(std::make_unique<Afcs>(options_.afcs, options_.frame_s,
-                                   [this](const ModeTransition& t) { transitions_.push_back(t); })) {}
+                                   [this](const ModeTransition& t) { transitions_.push_back(t); })) {
+  if (options_.ils_delay_frames < 0 || options_.ils_delay_frames > 10) {
+    throw std::invalid_argument("ClosedLoopOptions.ils_delay_frames must be within 0..10 (got " +
+                                std::to_string(options_.ils_delay_frames) + ")");
+  }
+}
 
 TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double heading_true_rad, double tas_mps,
                                          const AircraftControls& configuration) {
@@ -49,6 +57,7 @@ TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double head
   touchdown_.reset();
   max_rollout_offset_m_ = 0.0;
   pending_ = McpButtons{};
+  ils_queue_.clear();
   mcp_.heading_true_rad = heading_true_rad;
   mcp_.altitude_m = point.altitude_m;
   mcp_.calibrated_airspeed_mps = std::clamp(model_->outputs().cas_mps, 40.0, 200.0);
@@ -56,23 +65,7 @@ TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double head
   return trim;
 }
 
-void ClosedLoopFlight::press(const McpButtons& b) {
-  McpButtons& p = pending_;
-  p.autopilot_engage |= b.autopilot_engage;
-  p.control_wheel_steering |= b.control_wheel_steering;
-  p.autopilot_disconnect |= b.autopilot_disconnect;
-  p.autothrottle_disconnect |= b.autothrottle_disconnect;
-  p.heading_select |= b.heading_select;
-  p.wing_level |= b.wing_level;
-  p.vor_localizer |= b.vor_localizer;
-  p.approach |= b.approach;
-  p.altitude_hold |= b.altitude_hold;
-  p.vertical_speed |= b.vertical_speed;
-  p.level_change |= b.level_change;
-  p.speed |= b.speed;
-  p.thrust |= b.thrust;
-  p.takeoff_go_around |= b.takeoff_go_around;
-}
+void ClosedLoopFlight::press(const McpButtons& b) { pending_ |= b; }
 
 double ClosedLoopFlight::time_s() const { return model_->time_s(); }
 
@@ -95,7 +88,10 @@ const FlightSample& ClosedLoopFlight::step() {
   if (glide_slope_off_air_) gs = nav::GlideSlopeReading{nav::SignalStatus::kStationOffAir, gs.ident};
   AfcsInputs in;
   in.aircraft = afcs_aircraft_state(o, pack_, gear_, pilot_);
-  in.ils = ils_signals(loc, gs, approach_, geometry_, pose);
+  ils_queue_.push_back(ils_signals(loc, gs, approach_, geometry_, pose));
+  const auto delay = static_cast<std::size_t>(options_.ils_delay_frames);
+  in.ils = ils_queue_.size() > delay ? ils_queue_.front() : AfcsIlsSignals{};
+  if (ils_queue_.size() > delay) ils_queue_.pop_front();
   in.buttons = pending_;
   in.mcp = mcp_;
   pending_ = McpButtons{};

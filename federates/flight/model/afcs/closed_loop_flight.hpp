@@ -13,6 +13,7 @@
 #include "flight/model/scenario/trim.hpp"
 #include "nav/model/radio/approach_geometry.hpp"
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -63,6 +64,11 @@ struct ClosedLoopOptions {
   double frame_s = 0.02;                  // 50 Hz, the federation's frame
   AfcsParameters afcs;
   AircraftModel::Options model;           // defaults to RK4 on the flat earth
+  /// Frames by which the ILS readings lag the aircraft: 0 reads the receivers on this frame's
+  /// state; a federation's lockstep delivers the navigation federate's readings of the state one
+  /// frame older (fedsim-flight --autopilot: 1). Until that many frames have passed the ILS reads
+  /// flagged, as before the first navigation sample arrives. 0..10.
+  int ils_delay_frames = 0;
   ClosedLoopOptions() { model.integrator = IntegrationMethod::kRk4; }
 };
 
@@ -132,6 +138,7 @@ class ClosedLoopFlight {
   std::unique_ptr<Afcs> afcs_;
   McpSelections mcp_;
   McpButtons pending_;
+  std::deque<AfcsIlsSignals> ils_queue_;  // the last ils_delay_frames + 1 readings, oldest first
   AircraftControls pilot_;
   FlightSample sample_;
   std::vector<FlightSample> history_;

@@ -35,6 +35,8 @@ std::string_view alert_name(AfcsAlert alert) {
     case kAlertInputInvalid: return "INPUT INVALID";
     case kAlertEngageRefused: return "ENGAGE REFUSED";
     case kAlertAttitudeLimit: return "ATTITUDE LIMIT";
+    case kAlertAutopilotFailed: return "AP FAILED";
+    case kAlertAutothrottleFailed: return "A/T FAILED";
   }
   return "?";
 }
@@ -87,16 +89,28 @@ void ModeLogic::acknowledge(const McpButtons& buttons) {
   // FCOM's "second push"); the same for the autothrottle. The other alerts clear with it.
   if (buttons.autopilot_disconnect && !state_.autopilot_engaged) {
     for (AfcsAlert a : {kAlertAutopilotDisconnect, kAlertLocalizerInvalid, kAlertGlideSlopeInvalid,
-                        kAlertInputInvalid, kAlertEngageRefused, kAlertAttitudeLimit}) {
+                        kAlertInputInvalid, kAlertEngageRefused, kAlertAttitudeLimit,
+                        kAlertAutopilotFailed}) {
       clear_alert(a, "acknowledged");
     }
   }
   if (buttons.autothrottle_disconnect && !state_.autothrottle_engaged) {
     clear_alert(kAlertAutothrottleDisconnect, "acknowledged");
+    clear_alert(kAlertAutothrottleFailed, "acknowledged");
   }
 }
 
 void ModeLogic::protect(const ModeConditions& c) {
+  if (c.autopilot_failed && state_.autopilot_engaged) {
+    raise(kAlertAutopilotFailed, "autopilot failed");
+    raise(kAlertAutopilotDisconnect, "autopilot failed");
+    set_autopilot(false, "autopilot failed");
+  }
+  if (c.autothrottle_failed && state_.autothrottle_engaged) {
+    raise(kAlertAutothrottleFailed, "autothrottle failed");
+    raise(kAlertAutothrottleDisconnect, "autothrottle failed");
+    set_autothrottle(false, "autothrottle failed");
+  }
   if (!c.inputs_valid) {
     if (state_.autopilot_engaged || state_.autothrottle_engaged) raise(kAlertInputInvalid, "input sample invalid");
     if (state_.autopilot_engaged) {
@@ -166,13 +180,17 @@ void ModeLogic::autothrottle_switch(const McpSelections& mcp, const ModeConditio
   // Engages when the switch is on, unless a disconnect tripped it: the switch must then be
   // cycled (the 737's arm switch is magnetically latched and released by the disconnect).
   if (mcp.autothrottle_armed && !state_.autothrottle_engaged && c.inputs_valid &&
-      !autothrottle_tripped_) {
+      !c.autothrottle_failed && !autothrottle_tripped_) {
     set_autothrottle(true, "A/T ARM switch on");
   }
 }
 
 void ModeLogic::engage(const McpButtons& buttons, const ModeConditions& c) {
   if (!buttons.autopilot_engage && !buttons.control_wheel_steering) return;
+  if (c.autopilot_failed) {
+    raise(kAlertEngageRefused, "autopilot failed");
+    return;
+  }
   if (!c.inputs_valid || c.on_ground || !c.attitude_engage_limits) {
     raise(kAlertEngageRefused, c.on_ground ? "on the ground" : "engage conditions not met");
     return;

@@ -11,6 +11,8 @@
 //    -10..+20 deg pitch; with no roll mode it engages in HDG HOLD (bank < 6 deg) or CWS R, with
 //    no pitch mode in CWS P. The disconnect switch disengages with the AP warning latched until
 //    pressed again;
+//  - failures (instructor): a failed autopilot or autothrottle disengages with its alert and
+//    refuses engagement until restored;
 //  - protections: a non-finite input sample, a flagged localizer while VOR/LOC, ALIGN or ROLLOUT
 //    is active, a flagged glide slope while G/S is active, or an attitude beyond +-45 deg bank /
 //    -15..+25 deg pitch disengage the autopilot (and, for a bad input sample, the autothrottle)
@@ -53,6 +55,8 @@ struct ModeConditions {
   bool attitude_engage_limits = true;         // within the engagement limits
   bool attitude_authority_limits = true;      // within the disengagement limits
   bool wings_level = false;                   // |bank| < 6 deg: CMD engages in HDG HOLD
+  bool autopilot_failed = false;              // by the instructor: disengage, refuse CMD/CWS
+  bool autothrottle_failed = false;           // by the instructor: disengage, refuse the A/T
 };
 
 /// The mode state (what the FMA shows).

@@ -68,4 +68,42 @@ TrimResult reposition_to_approach_gate(AircraftModel& model, const Runway& runwa
   return Trim(model).solve(request);
 }
 
+namespace {
+void require_within(double value, double lo, double hi, const char* field) {
+  if (!(value >= lo && value <= hi)) {  // NaN fails both
+    throw std::invalid_argument(std::string("intercept start: ") + field + " must be within " +
+                                std::to_string(lo) + ".." + std::to_string(hi) + " (got " +
+                                std::to_string(value) + ")");
+  }
+}
+}  // namespace
+
+TrimResult reposition_to_intercept(AircraftModel& model, const Runway& runway, const InterceptStart& s) {
+  require_within(s.distance_m, 0.0, 100000.0, "distance_m");
+  require_within(s.left_m, -20000.0, 20000.0, "left_m");
+  require_within(s.intercept_rad, 0.0, units::kHalfPi, "intercept_rad");
+  require_within(s.altitude_msl_m, runway.threshold.alt_m + 30.0, 20000.0, "altitude_msl_m (30 m above the runway at least)");
+  require_within(s.airspeed_mps, 1.0, 400.0, "airspeed_mps");
+  const auto& geodesic = GeographicLib::Geodesic::WGS84();
+  const double runway_heading_deg = runway.heading_rad * units::kRadToDeg;
+  double lat_deg = 0.0, lon_deg = 0.0, on_line_lat = 0.0, on_line_lon = 0.0;
+  geodesic.Direct(runway.threshold.lat_rad * units::kRadToDeg, runway.threshold.lon_rad * units::kRadToDeg,
+                  runway_heading_deg + 180.0, s.distance_m, on_line_lat, on_line_lon);
+  // Left of the landing direction is its heading minus 90 deg.
+  geodesic.Direct(on_line_lat, on_line_lon, runway_heading_deg - 90.0, s.left_m, lat_deg, lon_deg);
+  // Flying the landing direction from the left of the centreline, the centreline lies to the
+  // right: the intercept heading is the runway heading plus the intercept angle; from the
+  // right, minus.
+  const double towards_centreline = s.left_m >= 0.0 ? 1.0 : -1.0;
+  model.set_runway_elevation_m(runway.threshold.alt_m);
+  TrimRequest request;
+  request.kind = TrimKind::kLevel;
+  request.position = {lat_deg * units::kDegToRad, lon_deg * units::kDegToRad, s.altitude_msl_m};
+  request.heading_rad = runway.heading_rad + towards_centreline * s.intercept_rad;
+  request.airspeed_mps = s.airspeed_mps;
+  request.airspeed_is_cas = s.airspeed_is_cas;
+  request.controls = model.controls();
+  return Trim(model).solve(request);
+}
+
 }  // namespace fedsim::flight

@@ -39,4 +39,21 @@ TrimResult reposition_to_approach_gate(AircraftModel& model, const Runway& runwa
                                        double distance_m, double tas_mps,
                                        double glide_path_rad = 3.0 * units::kDegToRad);
 
+/// Where an approach starts: `distance_m` before the threshold along the extended centreline,
+/// `left_m` to the left of it (seen landing; negative: right), at `altitude_msl_m`, heading
+/// towards the centreline at `intercept_rad` to the runway heading (0: parallel to it).
+struct InterceptStart {
+  double distance_m = 0.0;      // [m], 0..100 km
+  double left_m = 0.0;          // [m], within +-20 km
+  double intercept_rad = 0.0;   // [rad], 0..90 deg
+  double altitude_msl_m = 0.0;  // [m], above the runway, below 20 km
+  double airspeed_mps = 0.0;    // true airspeed, or calibrated if airspeed_is_cas [m/s], > 0
+  bool airspeed_is_cas = false;
+};
+
+/// In level flight at the intercept start, wings level, with the current configuration
+/// (flaps, gear) held; the terrain becomes the threshold's elevation. Throws
+/// std::invalid_argument naming the field for a value outside its range (NaN included).
+TrimResult reposition_to_intercept(AircraftModel& model, const Runway& runway, const InterceptStart& start);
+
 }  // namespace fedsim::flight

@@ -25,8 +25,10 @@ WeatherSettings crosswind_10_kt_light_turbulence(double course_rad, std::uint64_
 }
 
 /// The autoland from 10 NM, 1.5 km left of the course at 2500 ft on a 30 deg intercept.
-std::unique_ptr<ClosedLoopFlight> fly_autoland(const WeatherSettings& weather) {
-  auto f = make_flight();
+std::unique_ptr<ClosedLoopFlight> fly_autoland(const WeatherSettings& weather, int ils_delay_frames = 0) {
+  ClosedLoopOptions options;
+  options.ils_delay_frames = ils_delay_frames;
+  auto f = make_flight(options);
   f->model().set_weather(weather);
   const TrimResult t = f->start_level({10.0 * kNm, 1500.0, 2500.0 * kFt}, f->course_rad() + 30.0 * kDeg,
                                       150.0 * kKt, landing_configuration());
@@ -129,6 +131,23 @@ TEST(AutolandInFlight, TenKnotCrosswindWithLightTurbulence) {
   }
   EXPECT_GT(crab, 3.0);  // 10 kt across 145 kt: 4 deg
   EXPECT_LT(std::abs(l.touchdown.heading_minus_course_rad), 2.0 * kDeg);
+}
+
+// In the federation the AFCS reads the navigation federate's ILS readings of the state one frame
+// older (lockstep: fedsim-nav steps on frame N-1's state): the same autoland with that lag.
+TEST(AutolandInFlight, CrosswindWithTheFederationsOneFrameIlsLag) {
+  auto f = fly_autoland(crosswind_10_kt_light_turbulence(ksfo_28r().course_true_rad, 7), 1);
+  const LandingFigures l = landing_figures(*f, ksfo_28r_centreline());
+  print("Autoland, 10 kt crosswind, light turbulence, ILS one frame late", l, *f);
+  expect_within_the_issue_limits(l, *f);
+}
+
+TEST(ClosedLoopFlight, RefusesAnIlsLagOutsideItsRange) {
+  ClosedLoopOptions options;
+  options.ils_delay_frames = -1;
+  EXPECT_THROW(make_flight(options), std::invalid_argument);
+  options.ils_delay_frames = 11;
+  EXPECT_THROW(make_flight(options), std::invalid_argument);
 }
 
 TEST(AutolandInFlight, GoAroundFrom200FeetClimbsAwayOnTheTrack) {

@@ -150,6 +150,40 @@ TEST(ModeLogic, AnInvalidInputSampleDisengagesAutopilotAndAutothrottle) {
   EXPECT_TRUE(r.frame(r.airborne()).autothrottle_engaged);
 }
 
+TEST(ModeLogic, AFailedAutopilotDisengagesRefusesCmdAndEngagesOnceRestored) {
+  Recorder r;
+  ASSERT_TRUE(r.press(&McpButtons::autopilot_engage, r.airborne()).autopilot_engaged);
+  ModeConditions failed = r.airborne();
+  failed.autopilot_failed = true;
+  const ModeState& s = r.frame(failed);
+  EXPECT_FALSE(s.autopilot_engaged);
+  EXPECT_TRUE(s.alerts & kAlertAutopilotFailed);
+  EXPECT_TRUE(s.alerts & kAlertAutopilotDisconnect);
+  EXPECT_TRUE(r.logged(ModeTransition::Channel::kAlert, "AP FAILED"));
+  // While failed, CMD is refused with an alert.
+  EXPECT_FALSE(r.press(&McpButtons::autopilot_engage, failed).autopilot_engaged);
+  EXPECT_TRUE(r.logic.state().alerts & kAlertEngageRefused);
+  // Restored: CMD engages again (the negative control of the refusal).
+  EXPECT_TRUE(r.press(&McpButtons::autopilot_engage, r.airborne()).autopilot_engaged);
+}
+
+TEST(ModeLogic, AFailedAutothrottleDisengagesAndStaysOffUntilRestoredAndCycled) {
+  Recorder r;
+  r.mcp.autothrottle_armed = true;
+  ASSERT_TRUE(r.frame(r.airborne()).autothrottle_engaged);
+  ModeConditions failed = r.airborne();
+  failed.autothrottle_failed = true;
+  EXPECT_FALSE(r.frame(failed).autothrottle_engaged);
+  EXPECT_TRUE(r.logic.state().alerts & kAlertAutothrottleFailed);
+  EXPECT_FALSE(r.frame(failed).autothrottle_engaged);
+  // Restored, the arm switch must be cycled (the disconnect released its latch).
+  EXPECT_FALSE(r.frame(r.airborne()).autothrottle_engaged);
+  r.mcp.autothrottle_armed = false;
+  r.frame(r.airborne());
+  r.mcp.autothrottle_armed = true;
+  EXPECT_TRUE(r.frame(r.airborne()).autothrottle_engaged);
+}
+
 TEST(ModeLogic, AfterGlideSlopeCaptureOnlyGoAroundLeavesTheApproach) {
   Recorder r;
   r.mcp.autothrottle_armed = true;

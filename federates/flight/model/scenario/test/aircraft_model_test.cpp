@@ -1,5 +1,6 @@
 // The aircraft executive: initial conditions, air data, moments moved to the CG, gust rates in
 // the aerodynamics, weather, failures, gear, fuel, repositioning, substeps and determinism.
+#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -305,6 +306,51 @@ TEST(AircraftModel, RepositionToTheApproachGateIsOnTheGlidePath) {
   // Hands off it stays on the 3 deg path.
   for (int i = 0; i < 1000; ++i) model->step(0.02);
   EXPECT_NEAR(model->outputs().climb_rate_mps, -70.0 * kKt * std::sin(3.0 * kDeg), 0.3);
+}
+
+TEST(AircraftModel, InterceptStartLiesBesideTheCentrelineHeadingTowardsIt) {
+  auto model = make_model("b737.yaml");
+  AircraftControls c = model->controls();
+  c.flaps = 0.875;
+  c.gear_down = true;
+  model->set_controls(c);
+  const Runway runway{{47.0 * kDeg, 8.0 * kDeg, 400.0}, 90.0 * kDeg};  // landing east
+  InterceptStart s;
+  s.distance_m = 12.0 * 1852.0;
+  s.left_m = 2.0 * 1852.0;  // left of an eastbound landing: north of the centreline
+  s.intercept_rad = 30.0 * kDeg;
+  s.altitude_msl_m = 400.0 + 2500.0 * kFt;
+  s.airspeed_mps = 150.0 * kKt;
+  s.airspeed_is_cas = true;
+  const TrimResult t = reposition_to_intercept(*model, runway, s);
+  ASSERT_TRUE(t.converged) << t.reason;
+  const AircraftOutputs& o = model->outputs();
+  // Seen from the threshold (GeographicLib's geodesic): hypot(12 NM, 2 NM) away, on the bearing
+  // of the reciprocal runway heading (west) turned north, to the left of the landing, by atan(2 / 12).
+  double range_m = 0.0, bearing_deg = 0.0, back_deg = 0.0;
+  GeographicLib::Geodesic::WGS84().Inverse(47.0, 8.0, o.geodetic.lat_rad / kDeg, o.geodetic.lon_rad / kDeg, range_m,
+                                           bearing_deg, back_deg);
+  // (0.1 %: the flat-earth model reports its position through its tangent-plane mapping.)
+  EXPECT_NEAR(range_m, std::hypot(s.distance_m, s.left_m), 1e-3 * range_m);
+  EXPECT_NEAR(bearing_deg + (bearing_deg < 0 ? 360.0 : 0.0), 270.0 + std::atan2(s.left_m, s.distance_m) / kDeg, 0.01);
+  EXPECT_NEAR(o.euler.psi_rad, 120.0 * kDeg, 1e-6);  // towards the centreline, south of east
+  EXPECT_NEAR(o.cas_mps, 150.0 * kKt, 0.05);
+  EXPECT_NEAR(o.climb_rate_mps, 0.0, 1e-6);
+  EXPECT_NEAR(o.flap_norm, 0.875, 1e-12);
+  // From the right the heading turns the other way; a bad field is refused by name.
+  s.left_m = -s.left_m;
+  ASSERT_TRUE(reposition_to_intercept(*model, runway, s).converged);
+  EXPECT_NEAR(model->outputs().euler.psi_rad, 60.0 * kDeg, 1e-6);
+  s.intercept_rad = std::nan("");
+  try {
+    reposition_to_intercept(*model, runway, s);
+    ADD_FAILURE() << "a NaN intercept angle was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("intercept_rad"), std::string::npos) << e.what();
+  }
+  s.intercept_rad = 30.0 * kDeg;
+  s.altitude_msl_m = 410.0;  // 10 m above the runway
+  EXPECT_THROW(reposition_to_intercept(*model, runway, s), std::invalid_argument);
 }
 
 TEST(AircraftModel, SubstepsEqualShorterFrames) {

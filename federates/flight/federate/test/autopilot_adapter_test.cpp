@@ -1,0 +1,199 @@
+// The AFCS's translation layer in the flight federate: MCP samples checked and turned into
+// selections and presses, NAV1's ILS passed on only when valid, the FMA filled from the AFCS.
+#include "flight/federate/autopilot_adapter.hpp"
+
+#include "common/units/units.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace fedsim::flight {
+namespace {
+
+msg::McpPanel good_panel() {
+  msg::McpPanel m;
+  m.heading_true_rad(1.0);
+  m.altitude_msl_m(900.0);
+  m.vertical_speed_mps(-5.0);
+  m.airspeed_cas_mps(75.0);
+  m.bank_limit_rad(25.0 * units::kDegToRad);
+  m.flight_director_on(true);
+  m.autothrottle_armed(true);
+  m.autobrake(2);
+  return m;
+}
+
+TEST(CheckMcp, AcceptsAGoodPanelAndNamesTheFieldOfABadOne) {
+  EXPECT_FALSE(check_mcp(good_panel()).has_value());
+
+  msg::McpPanel nan_heading = good_panel();
+  nan_heading.heading_true_rad(std::numeric_limits<double>::quiet_NaN());
+  ASSERT_TRUE(check_mcp(nan_heading).has_value());
+  EXPECT_NE(check_mcp(nan_heading)->find("heading_true_rad"), std::string::npos);
+
+  msg::McpPanel inf_altitude = good_panel();
+  inf_altitude.altitude_msl_m(std::numeric_limits<double>::infinity());
+  ASSERT_TRUE(check_mcp(inf_altitude).has_value());
+  EXPECT_NE(check_mcp(inf_altitude)->find("altitude_msl_m"), std::string::npos);
+
+  msg::McpPanel slow = good_panel();
+  slow.airspeed_cas_mps(10.0);
+  ASSERT_TRUE(check_mcp(slow).has_value());
+  EXPECT_NE(check_mcp(slow)->find("airspeed_cas_mps"), std::string::npos);
+
+  msg::McpPanel steep = good_panel();
+  steep.vertical_speed_mps(-60.0);
+  EXPECT_TRUE(check_mcp(steep).has_value());
+
+  msg::McpPanel wide_bank = good_panel();
+  wide_bank.bank_limit_rad(45.0 * units::kDegToRad);
+  EXPECT_TRUE(check_mcp(wide_bank).has_value());
+
+  msg::McpPanel autobrake = good_panel();
+  autobrake.autobrake(5);
+  ASSERT_TRUE(check_mcp(autobrake).has_value());
+  EXPECT_NE(check_mcp(autobrake)->find("autobrake"), std::string::npos);
+}
+
+TEST(McpSelections, CarryThePanelsValuesInSi) {
+  const afcs::McpSelections s = mcp_selections(good_panel());
+  EXPECT_DOUBLE_EQ(s.heading_true_rad, 1.0);
+  EXPECT_DOUBLE_EQ(s.altitude_m, 900.0);
+  EXPECT_DOUBLE_EQ(s.vertical_speed_mps, -5.0);
+  EXPECT_DOUBLE_EQ(s.calibrated_airspeed_mps, 75.0);
+  EXPECT_TRUE(s.autothrottle_armed);
+  EXPECT_EQ(s.autobrake_setting, 2);
+}
+
+TEST(McpPressTracker, TheFirstSampleIsTheBaselineAndEachIncreaseOnePress) {
+  McpPressTracker tracker;
+  msg::McpPanel m = good_panel();
+  m.presses()[msg::MCP_APP] = 3;  // pressed before this federate joined
+  EXPECT_FALSE(tracker.presses(m).approach);
+
+  EXPECT_FALSE(tracker.presses(m).approach);  // a repeated sample presses nothing
+  m.presses()[msg::MCP_APP] = 4;
+  m.presses()[msg::MCP_CMD] = 1;
+  afcs::McpButtons b = tracker.presses(m);
+  EXPECT_TRUE(b.approach);
+  EXPECT_TRUE(b.autopilot_engage);
+  EXPECT_FALSE(b.altitude_hold);
+  EXPECT_FALSE(b.takeoff_go_around);
+
+  m.presses()[msg::MCP_TOGA] = 2;  // two presses in lost samples: still one press now
+  b = tracker.presses(m);
+  EXPECT_TRUE(b.takeoff_go_around);
+  EXPECT_FALSE(b.approach);
+
+  m.presses()[msg::MCP_TOGA] = 0;  // the I/O federate restarted: a new baseline, no press
+  EXPECT_FALSE(tracker.presses(m).takeoff_go_around);
+  m.presses()[msg::MCP_TOGA] = 1;
+  EXPECT_TRUE(tracker.presses(m).takeoff_go_around);
+}
+
+TEST(McpPressTracker, EveryButtonIndexReachesItsButton) {
+  McpPressTracker tracker;
+  msg::McpPanel m;
+  tracker.presses(m);
+  int pressed_total = 0;
+  for (std::size_t i = 0; i < msg::MCP_BUTTON_COUNT; ++i) {
+    m.presses()[i] += 1;
+    const afcs::McpButtons b = tracker.presses(m);
+    const int count = b.autopilot_engage + b.control_wheel_steering + b.autopilot_disconnect +
+                      b.autothrottle_disconnect + b.heading_select + b.wing_level + b.vor_localizer +
+                      b.approach + b.altitude_hold + b.vertical_speed + b.level_change + b.speed +
+                      b.thrust + b.takeoff_go_around;
+    EXPECT_EQ(count, 1) << "button index " << i;
+    pressed_total += count;
+  }
+  EXPECT_EQ(pressed_total, static_cast<int>(msg::MCP_BUTTON_COUNT));
+}
+
+msg::NavReceiver localizer_receiver() {
+  msg::NavReceiver r;
+  r.status(msg::SIGNAL_VALID);
+  r.signal(msg::NAV_SIGNAL_LOCALIZER);
+  r.course_deviation(0.3);
+  r.course_true_rad(4.8);
+  r.localizer_half_width_rad(0.04);
+  r.localizer_distance_m(9000.0);
+  r.threshold_distance_m(6000.0);
+  r.glideslope_status(msg::SIGNAL_VALID);
+  r.glideslope_deviation(-0.2);
+  r.glide_path_angle_rad(3.0 * units::kDegToRad);
+  r.glideslope_distance_m(6300.0);
+  return r;
+}
+
+TEST(IlsSignals, AValidLocalizerAndGlideSlopePassTheirReadings) {
+  const afcs::AfcsIlsSignals s = ils_signals_from_receiver(localizer_receiver());
+  ASSERT_TRUE(s.localizer_valid);
+  ASSERT_TRUE(s.glide_slope_valid);
+  EXPECT_DOUBLE_EQ(s.localizer_deviation, 0.3);
+  EXPECT_DOUBLE_EQ(s.localizer_half_width_rad, 0.04);
+  EXPECT_DOUBLE_EQ(s.localizer_course_true_rad, 4.8);
+  EXPECT_DOUBLE_EQ(s.distance_to_threshold_m, 6000.0);
+  EXPECT_DOUBLE_EQ(s.glide_slope_deviation, -0.2);
+  EXPECT_DOUBLE_EQ(s.glide_slope_distance_m, 6300.0);
+}
+
+TEST(IlsSignals, AFlaggedSignalPassesNoNumbers) {
+  msg::NavReceiver off = localizer_receiver();
+  off.status(msg::SIGNAL_RECEIVER_FAILED);
+  afcs::AfcsIlsSignals s = ils_signals_from_receiver(off);
+  EXPECT_FALSE(s.localizer_valid);
+  EXPECT_FALSE(s.glide_slope_valid);
+  EXPECT_EQ(s.localizer_deviation, 0.0);
+  EXPECT_EQ(s.glide_slope_deviation, 0.0);
+
+  msg::NavReceiver vor = localizer_receiver();
+  vor.signal(msg::NAV_SIGNAL_VOR);  // a VOR is no localizer
+  EXPECT_FALSE(ils_signals_from_receiver(vor).localizer_valid);
+
+  msg::NavReceiver no_gs = localizer_receiver();
+  no_gs.glideslope_status(msg::SIGNAL_OUTSIDE_COVERAGE);
+  s = ils_signals_from_receiver(no_gs);
+  EXPECT_TRUE(s.localizer_valid);
+  EXPECT_FALSE(s.glide_slope_valid);
+  EXPECT_EQ(s.glide_slope_deviation, 0.0);
+}
+
+TEST(AutopilotState, CarriesTheFmaAndCommandsOfTheAfcs) {
+  afcs::Afcs afcs(afcs::AfcsParameters{}, 1.0 / 60.0);
+  afcs::AfcsInputs in;
+  in.aircraft.calibrated_airspeed_mps = 75.0;
+  in.aircraft.true_airspeed_mps = 78.0;
+  in.aircraft.ground_speed_mps = 78.0;
+  in.aircraft.altitude_m = 900.0;
+  in.aircraft.radio_height_m = 900.0;
+  in.aircraft.angle_of_attack_rad = 0.05;
+  in.aircraft.throttle = 0.5;
+  in.mcp = mcp_selections(good_panel());
+  in.buttons.autopilot_engage = true;
+  in.buttons.altitude_hold = true;
+  afcs.step(in);
+  in.buttons = {};
+  in.aircraft.time_s = 1.0 / 60.0;
+  afcs.step(in);
+
+  msg::AutopilotState out;
+  fill_autopilot_state(afcs, 3, out);
+  EXPECT_TRUE(out.fma().autopilot_engaged());
+  EXPECT_EQ(out.fma().pitch(), msg::FMA_PITCH_ALTITUDE_HOLD);
+  EXPECT_EQ(out.transitions(), 3u);
+  EXPECT_DOUBLE_EQ(out.hold_altitude_msl_m(), afcs.hold_altitude_m());
+  EXPECT_DOUBLE_EQ(out.elevator(), afcs.outputs().elevator);
+  EXPECT_TRUE(out.input_problem().to_string().empty());
+
+  in.aircraft.altitude_m = std::numeric_limits<double>::quiet_NaN();  // a bad sample
+  afcs.step(in);
+  fill_autopilot_state(afcs, 4, out);
+  EXPECT_FALSE(out.fma().autopilot_engaged());
+  EXPECT_NE(out.fma().alerts() & msg::AFCS_ALERT_AP_DISCONNECT, 0u);
+  EXPECT_EQ(out.input_problem().to_string(), "aircraft.altitude_m");
+}
+
+}  // namespace
+}  // namespace fedsim::flight
