@@ -82,7 +82,7 @@ bool visit(std::string_view name, Visitor&& visitor) {
   };
   return try_one(frame_tick) || try_one(frame_done) || try_one(sim_command) ||
          try_one(federate_status) || try_one(pilot_controls) || try_one(aircraft_state) ||
-         try_one(engine_state) || try_one(navigation_state) || try_one(motion_state) ||
+         try_one(engine_state) || try_one(navigation_state) || try_one(autopilot_state) || try_one(motion_state) ||
          try_one(control_loading_state) || try_one(visual_status);
 }
 }  // namespace topics

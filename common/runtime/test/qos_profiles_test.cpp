@@ -52,7 +52,12 @@ TEST(TopicCatalogue, EveryTopicHasItsIdlNameTypeAndAKnownProfile) {
     EXPECT_EQ(t->type_name.rfind("fedsim::msg::", 0), 0u);
     EXPECT_NE(std::find(qos::all().begin(), qos::all().end(), t->default_qos), qos::all().end());
     EXPECT_EQ(topics::find(t->name), t);
+    // The typed lookup (recorders, the in-process host) knows every topic by name.
+    std::string visited_type;
+    EXPECT_TRUE(topics::visit(t->name, [&](const auto& topic) { visited_type = topic.info.type_name; }));
+    EXPECT_EQ(visited_type, t->type_name);
   }
+  EXPECT_FALSE(topics::visit("fedsim/no_such_topic", [](const auto&) {}));
   EXPECT_EQ(topics::aircraft_state.name(), msg::TOPIC_AIRCRAFT_STATE);
   EXPECT_EQ(topics::aircraft_state.info.type_name, "fedsim::msg::AircraftState");
   EXPECT_TRUE(topics::pilot_controls.info.lockstep_input);

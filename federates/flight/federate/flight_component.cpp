@@ -122,6 +122,11 @@ void FlightComponent::fly_autopilot(const runtime::FrameContext& frame) {
   model.set_controls(afcs::apply_afcs_outputs(out, pilot, o.pitch_trim_norm));
   // Trim switches are momentary: where the auto-trim leaves the trim, the pilot finds it.
   if (out.autopilot_engaged) trim_base_.elevator_trim = o.pitch_trim_norm;
+  // The autothrottle back-drives the thrust levers (as a 737's servos do): relative controls
+  // fly about where it left them, so its disconnect after a retard leaves the levers at idle.
+  // Absolute controls take the I/O federate's levers again (a control loader would back-drive
+  // those).
+  if (out.autothrottle_engaged) trim_base_.set_throttle(out.throttle);
 }
 
 void FlightComponent::step(const runtime::FrameContext& frame) {

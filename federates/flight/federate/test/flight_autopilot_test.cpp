@@ -6,6 +6,7 @@
 // Also: the instructor's autopilot failure disengages it with an alert; a bad MCP panel is
 // rejected and counted.
 #include "flight/federate/flight_program.hpp"
+#include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/landing_figures.hpp"
 #include "io/io_component.hpp"
 #include "io/model/input_profile.hpp"
@@ -147,13 +148,18 @@ TEST(FlightAutopilot, FliesTheIlsFromTheNavFederatesReadingsToAStopOnTheCentreli
       afcs::RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
   const double beyond_m = runway.beyond_threshold_m(t.latitude_rad(), t.longitude_rad());
   const double left_m = runway.left_m(t.latitude_rad(), t.longitude_rad());
+  // The localizer course as data/nav/ils.csv publishes it (what the nav federate's receiver
+  // flies): it passes 7.6 m left of the threshold (data/nav/ILS.md "Known offset: KSFO 28R").
+  const nav::IlsApproach ils = afcs::load_default_ils_approach("KSFO", "28R");
+  const double left_of_course_m =
+      nav::course_coordinates(ils, nav::approach_geometry(ils), t.latitude_rad(), t.longitude_rad()).left_m;
   const double sink_mps = t.velocity_ned_mps()[2];
   const double stop_left_m = runway.left_m(r.state.latitude_rad(), r.state.longitude_rad());
   const double stop_beyond_m = runway.beyond_threshold_m(r.state.latitude_rad(), r.state.longitude_rad());
   std::printf("federation autoland: LOC at %.1f s, G/S at %.1f s, touchdown %.0f ft beyond the threshold, "
-              "%+.2f m left of the centreline, sink %.2f ft/s, bank %+.2f deg, %.1f KCAS; stopped %.0f m beyond, "
+              "%+.2f m left of the centreline (%+.2f m of the published localizer course), sink %.2f ft/s, bank %+.2f deg, %.1f KCAS; stopped %.0f m beyond, "
               "%+.2f m off, %.0f s flown\n",
-              r.loc_capture_s, r.gs_capture_s, beyond_m / kFt, left_m, sink_mps / kFt, t.phi_rad() / kDeg,
+              r.loc_capture_s, r.gs_capture_s, beyond_m / kFt, left_m, left_of_course_m, sink_mps / kFt, t.phi_rad() / kDeg,
               t.air().cas_mps() / kKt, stop_beyond_m, stop_left_m, flown_s);
   // The limits (landing_figures.hpp), against the runway's own centreline.
   EXPECT_GT(r.loc_capture_s, 0.0);
@@ -162,6 +168,7 @@ TEST(FlightAutopilot, FliesTheIlsFromTheNavFederatesReadingsToAStopOnTheCentreli
   EXPECT_TRUE(r.pitch_seen.count(msg::FMA_PITCH_FLARE));
   EXPECT_TRUE(r.roll_seen.count(msg::FMA_ROLL_ROLLOUT));
   EXPECT_LT(std::abs(left_m), 27.0 * kFt);
+  EXPECT_LT(std::abs(left_of_course_m), 2.0);  // the AFCS flew the beam it was given
   EXPECT_LT(sink_mps, 6.0 * kFt);
   EXPECT_GT(beyond_m, 200.0 * kFt);
   EXPECT_LT(beyond_m, 2700.0 * kFt);
@@ -173,6 +180,11 @@ TEST(FlightAutopilot, FliesTheIlsFromTheNavFederatesReadingsToAStopOnTheCentreli
   EXPECT_EQ(r.autopilot.fma().alerts(), 0u);
   EXPECT_GT(r.autopilot.transitions(), 6u);
   EXPECT_EQ(f.composition.fault_count(), 0u);
+  // Stopped, the autothrottle lets go where it retarded the levers: idle, and the aircraft
+  // stays where it stopped (relative controls fly about the levers it back-drove).
+  f.composition.run(500);
+  EXPECT_LT(r.state.controls().throttle()[0], 0.05);
+  EXPECT_LT(r.state.ground_speed_mps(), 0.5);
 }
 
 TEST(FlightAutopilot, WithNavOneUntunedTheApproachArmsButNeverCaptures) {
