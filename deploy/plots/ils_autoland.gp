@@ -3,13 +3,17 @@
 # deviations NAV1 read (fedsim_navigation_state.csv), speed and thrust, pitch and sink rate, and
 # the autopilot's modes (fedsim_autopilot_state.csv).
 # gnuplot -e "outdir='out/ils-autoland'; outfile='out/ils-autoland/ils_autoland.png'; title='...'" deploy/plots/ils_autoland.gp
-# The runway (lat0, lon0, heading) defaults to KSFO 28R's threshold in data/nav/runways.csv.
-if (!exists("outdir")) outdir = '.'
-if (!exists("outfile")) outfile = 'ils_autoland.png'
-if (!exists("title")) title = 'fedsim ILS approach and autoland'
-if (!exists("lat0")) lat0 = 37.613538
-if (!exists("lon0")) lon0 = -122.35716
-if (!exists("runway_heading_deg")) runway_heading_deg = 298.0
+# The approach geometry defaults to KSFO 28R: the landing threshold (data/nav/runways.csv's end
+# moved by its 91 m displacement), the runway's true azimuth, and from data/nav/ils.csv the
+# localizer antenna 3716.6 m beyond the threshold and the glide-slope antenna abeam a point 239 m
+# (784 ft) past it with a 3.00 deg path. The beam limits drawn are full scale (150 uA): the
+# localizer 350 ft either side at the threshold (ICAO Annex 10's 700 ft course sector), the glide
+# slope 0.24 of its angle above and below the path (as the receivers model them).
+if (!exists("lat0")) lat0 = 37.613921
+if (!exists("lon0")) lon0 = -122.358072
+if (!exists("runway_heading_deg")) runway_heading_deg = 297.813
+if (!exists("localizer_beyond_m")) localizer_beyond_m = 3716.6
+if (!exists("glide_slope_beyond_m")) glide_slope_beyond_m = 239.0
 if (!exists("glide_path_deg")) glide_path_deg = 3.0
 aircraft = outdir.'/fedsim_aircraft_state.csv'
 navigation = outdir.'/fedsim_navigation_state.csv'
@@ -36,17 +40,24 @@ set xlabel 'distance before the threshold (NM)'
 set ylabel 'left of the centreline (m)'
 set xrange [*:*] reverse
 set key top right
+localizer_limit(x_nm) = 106.68 * (x_nm / nm + localizer_beyond_m) / localizer_beyond_m
 plot aircraft using (before_threshold(column('latitude_rad'), column('longitude_rad')) * nm):\
                     (left_of_centreline(column('latitude_rad'), column('longitude_rad'))) \
        with lines lw 2 lc rgb '#1f77b4' title 'aircraft (CG)', \
-     0 with lines dt 2 lc rgb '#444444' title 'extended centreline'
+     0 with lines dt 2 lc rgb '#444444' title 'extended centreline', \
+     (x > 0 ? localizer_limit(x) : 1/0) with lines lw 1 lc rgb '#999999' title 'localizer full scale', \
+     (x > 0 ? -localizer_limit(x) : 1/0) with lines lw 1 lc rgb '#999999' notitle
 
 set title 'vertical profile'
 set ylabel 'height above the runway (ft)'
+path_ft(x_nm, angle_deg) = (x_nm / nm + glide_slope_beyond_m) * tan(angle_deg / deg) * ft
 plot aircraft using (before_threshold(column('latitude_rad'), column('longitude_rad')) * nm):(column('height_agl_m') * ft) \
        with lines lw 2 lc rgb '#1f77b4' title 'aircraft (CG)', \
-     (x > 0 ? 50 + x * 1852 * tan(glide_path_deg / deg) * ft : 1/0) with lines dt 2 lc rgb '#444444' \
-       title sprintf('nominal %.1f deg path, 50 ft over the threshold', glide_path_deg)
+     (x > -glide_slope_beyond_m * nm ? path_ft(x, glide_path_deg) : 1/0) with lines dt 2 lc rgb '#444444' \
+       title sprintf('glide path %.2f deg from the GS antenna', glide_path_deg), \
+     (x > -glide_slope_beyond_m * nm ? path_ft(x, 1.24 * glide_path_deg) : 1/0) with lines lw 1 lc rgb '#999999' \
+       title 'glide slope full scale (0.24 of the angle)', \
+     (x > -glide_slope_beyond_m * nm ? path_ft(x, 0.76 * glide_path_deg) : 1/0) with lines lw 1 lc rgb '#999999' notitle
 set xrange [*:*] noreverse
 
 set title 'ILS deviations NAV1 read (full scale = 1; a flagged reading is not drawn)'

@@ -254,7 +254,8 @@ void add_command_commands(CLI::App& app, int& exit_code) {
                                   fail ? "fail a system, e.g. engine1" : "restore a failed system");
     add_common_options(*f, *o);
     f->add_option("system", o->target,
-                  "system: engine1..engine4 (flight); nav1, nav2, adf, markers, ins, gps (denied), "
+                  "system: engine1..engine4, autopilot, autothrottle (flight; the autopilot with "
+                  "--autopilot); nav1, nav2, adf, markers, ins, gps (denied), "
                   "station:<IDENT>, station-dme:<IDENT>, station-gs:<IDENT>, "
                   "station-markers:<IDENT> (navigation)")
         ->required();
