@@ -7,6 +7,7 @@
 #include "fedsim/launcher.hpp"
 #include "flight/federate/flight_program.hpp"
 #include "io/io_component.hpp"
+#include "motion/motion_component.hpp"
 #include "nav/nav_component.hpp"
 #include "synthetic/synthetic_component.hpp"
 #include "topic/in_process_recorder.hpp"
@@ -26,6 +27,7 @@ const std::map<std::string, runtime::FederateProgram (*)()>& component_programs(
       {"fedsim-io", &io::program},
       {"fedsim-flight", &flight::program},
       {"fedsim-nav", &nav::program},
+      {"fedsim-motion", &motion::program},
       {"fedsim-synthetic", &synthetic::program},
   };
   return programs;

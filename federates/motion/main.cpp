@@ -1,0 +1,3 @@
+#include "motion/motion_component.hpp"
+
+int main(int argc, char** argv) { return fedsim::runtime::federate_main(argc, argv, fedsim::motion::program()); }

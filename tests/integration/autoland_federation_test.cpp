@@ -1,0 +1,85 @@
+// The ILS approach and autoland deployment (the README's, deploy/ils-autoland.yaml) as a user
+// runs it: real federates over DDS on 127.0.0.1 in lockstep, and the same file composed
+// in-process. Its own executable: a 20,000-frame federation is run serially, with a longer
+// timeout than the other integration tests.
+#include "common/util/child_process.hpp"
+#include "common/runtime/topic_types.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fedsim::testing {
+namespace {
+
+using util::ChildProcess;
+using util::read_file;
+using util::temp_dir;
+
+std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+
+/// The value of `column` in the last row of a recorded CSV (fedsim record's header names).
+double last_value(const std::string& csv, const std::string& column) {
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  std::stringstream in(csv);
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  const auto names = split(header), cells = split(last);
+  for (std::size_t i = 0; i < names.size() && i < cells.size(); ++i) {
+    if (names[i] == column) return std::stod(cells[i]);
+  }
+  ADD_FAILURE() << "no column " << column;
+  return std::nan("");
+}
+
+// The ILS approach and autoland deployment (the README's): over DDS in lockstep the 737 lands
+// and stops under the autopilot, and the in-process composition of the same file computes the
+// same recording byte for byte.
+TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
+  const std::string dir = temp_dir("ils_autoland");
+  const std::string yaml = std::string(FEDSIM_SOURCE_DIR) + "/deploy/ils-autoland.yaml";
+  auto fly = [&](const std::string& name, std::vector<std::string> extra) {
+    const std::string out = dir + "/" + name;
+    std::vector<std::string> argv = {bin("fedsim"), "run", yaml, "--out", out, "--quiet", "--progress", "0"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    ChildProcess fedsim(argv, dir + "/" + name + ".log");
+    EXPECT_TRUE(fedsim.wait(300)) << fedsim.output();
+    EXPECT_EQ(fedsim.exit_code(), 0) << fedsim.output();
+    EXPECT_TRUE(std::filesystem::exists(out + "/ils_autoland.png")) << fedsim.output();
+    return std::pair{read_file(out + "/fedsim_aircraft_state.csv"), read_file(out + "/fedsim_autopilot_state.csv")};
+  };
+  const auto [dds_aircraft, dds_autopilot] = fly("dds", {"--domain", "142"});
+  const auto [local_aircraft, local_autopilot] = fly("in_process", {"--in-process"});
+  EXPECT_EQ(std::count(dds_autopilot.begin(), dds_autopilot.end(), '\n'), 20001);  // header + every frame
+  // Landed, stopped, the autopilot still engaged in ROLLOUT with no alert, the levers at idle.
+  EXPECT_EQ(last_value(dds_autopilot, "fma.roll"), static_cast<double>(msg::FMA_ROLL_ROLLOUT));
+  EXPECT_EQ(last_value(dds_autopilot, "fma.pitch"), static_cast<double>(msg::FMA_PITCH_ROLLOUT));
+  EXPECT_EQ(last_value(dds_autopilot, "fma.autopilot_engaged"), 1.0);
+  EXPECT_EQ(last_value(dds_autopilot, "fma.alerts"), 0.0);
+  EXPECT_EQ(last_value(dds_aircraft, "on_ground"), 1.0);
+  EXPECT_LT(last_value(dds_aircraft, "ground_speed_mps"), 0.5);
+  EXPECT_LT(last_value(dds_aircraft, "controls.throttle[0]"), 0.05);
+  EXPECT_TRUE(dds_aircraft == local_aircraft) << "the in-process composition flew a different aircraft";
+  EXPECT_TRUE(dds_autopilot == local_autopilot) << "the in-process autopilot differs from the federation's";
+  // The motion platform cued the whole flight without a cut-off.
+  const std::string dds_motion = read_file(dir + "/dds/fedsim_motion_state.csv");
+  EXPECT_EQ(std::count(dds_motion.begin(), dds_motion.end(), '\n'), 20001);
+  EXPECT_EQ(last_value(dds_motion, "status"), static_cast<double>(msg::MOTION_ENGAGED));
+  EXPECT_TRUE(dds_motion == read_file(dir + "/in_process/fedsim_motion_state.csv"));
+}
+
+}  // namespace
+}  // namespace fedsim::testing
