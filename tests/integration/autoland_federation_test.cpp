@@ -79,6 +79,13 @@ TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
   EXPECT_EQ(std::count(dds_motion.begin(), dds_motion.end(), '\n'), 20001);
   EXPECT_EQ(last_value(dds_motion, "status"), static_cast<double>(msg::MOTION_ENGAGED));
   EXPECT_TRUE(dds_motion == read_file(dir + "/in_process/fedsim_motion_state.csv"));
+  // The control loader felt the controls the whole flight, back-driven by the autopilot.
+  const std::string dds_loading = read_file(dir + "/dds/fedsim_control_loading_state.csv");
+  EXPECT_EQ(std::count(dds_loading.begin(), dds_loading.end(), '\n'), 20001);
+  EXPECT_EQ(last_value(dds_loading, "status"), static_cast<double>(msg::CONTROL_LOADING_ACTIVE));
+  EXPECT_EQ(last_value(dds_loading, "pitch_backdriven"), 1.0);
+  EXPECT_EQ(last_value(dds_loading, "stick_shaker"), 0.0);  // inhibited on the ground
+  EXPECT_TRUE(dds_loading == read_file(dir + "/in_process/fedsim_control_loading_state.csv"));
 }
 
 }  // namespace

@@ -257,7 +257,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
                   "system: engine1..engine4, autopilot, autothrottle (flight; the autopilot with "
                   "--autopilot); nav1, nav2, adf, markers, ins, gps (denied), "
                   "station:<IDENT>, station-dme:<IDENT>, station-gs:<IDENT>, "
-                  "station-markers:<IDENT> (navigation); motion (the motion platform: cut-off)")
+                  "station-markers:<IDENT> (navigation); motion, control_loading (cut-off)")
         ->required();
     f->callback([o, fail, &exit_code] {
       msg::SimCommand c;

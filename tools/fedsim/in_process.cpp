@@ -7,6 +7,7 @@
 #include "fedsim/launcher.hpp"
 #include "flight/federate/flight_program.hpp"
 #include "io/io_component.hpp"
+#include "control_loading/control_loading_component.hpp"
 #include "motion/motion_component.hpp"
 #include "nav/nav_component.hpp"
 #include "synthetic/synthetic_component.hpp"
@@ -28,6 +29,7 @@ const std::map<std::string, runtime::FederateProgram (*)()>& component_programs(
       {"fedsim-flight", &flight::program},
       {"fedsim-nav", &nav::program},
       {"fedsim-motion", &motion::program},
+      {"fedsim-control-loading", &control_loading::program},
       {"fedsim-synthetic", &synthetic::program},
   };
   return programs;

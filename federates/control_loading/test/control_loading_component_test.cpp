@@ -1,0 +1,163 @@
+// The control-loading federate's adapter in the in-process composition (no DDS): it fades the
+// forces in once the aircraft state arrives; the force that holds the column grows with the
+// dynamic pressure (the gradient's schedule); the autopilot back-drives the column; a NaN
+// sample and the instructor cut it off to SAFE within the frame, reported by name.
+#include "control_loading/control_loading_component.hpp"
+
+#include "common/runtime/composition.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fedsim::control_loading {
+namespace {
+
+/// The aircraft (dynamic pressure, angle of attack), the pilot (column forward by `column`) and,
+/// when told, the autopilot engaged with its elevator command.
+class Writers final : public runtime::Component {
+ public:
+  Writers()
+      : Component("writers"),
+        aircraft_(writes(runtime::topics::aircraft_state)),
+        pilot_(writes(runtime::topics::pilot_controls)),
+        autopilot_(writes(runtime::topics::autopilot_state)) {}
+  void step(const runtime::FrameContext& frame) override {
+    msg::AircraftState s;
+    s.air().qbar_pa(nan ? std::nan("") : qbar_pa);
+    s.air().alpha_rad(alpha_rad);
+    s.weight_on_wheels(on_ground);
+    s.stamp(frame.end_stamp());
+    aircraft_.write(s);
+    msg::PilotControls c;
+    c.elevator(column);
+    c.stamp(frame.stamp());
+    pilot_.write(c);
+    if (autopilot_elevator) {
+      msg::AutopilotState a;
+      a.fma().autopilot_engaged(true);
+      a.elevator(*autopilot_elevator);
+      a.stamp(frame.end_stamp());
+      autopilot_.write(a);
+    }
+  }
+  double qbar_pa = 3000.0, alpha_rad = 0.05, column = 0.0;
+  bool nan = false, on_ground = false;
+  std::optional<double> autopilot_elevator;
+
+ private:
+  runtime::Output<msg::AircraftState>& aircraft_;
+  runtime::Output<msg::PilotControls>& pilot_;
+  runtime::Output<msg::AutopilotState>& autopilot_;
+};
+
+class Reader final : public runtime::Component {
+ public:
+  Reader() : Component("reader"), in_(reads(runtime::topics::control_loading_state)) {}
+  void step(const runtime::FrameContext&) override {
+    if (in_.latest()) latest = *in_.latest();
+  }
+  msg::ControlLoadingState latest;
+
+ private:
+  runtime::Input<msg::ControlLoadingState>& in_;
+};
+
+msg::SimCommand cut(bool active) {
+  msg::SimCommand c;
+  c.kind(msg::COMMAND_FAILURE);
+  c.target("control_loading");
+  c.failure().active(active);
+  return c;
+}
+
+class ControlLoadingComponentTest : public ::testing::Test {
+ protected:
+  ControlLoadingComponentTest() : loader_("control_loading", ControlLoadingSetup{}), composition_({}) {
+    composition_.add(writers_);
+    composition_.add(loader_);
+    composition_.add(reader_);
+  }
+  void seconds(double s) { composition_.run(static_cast<std::uint64_t>(s * 50.0)); }
+  const runtime::FaultReport* fault(const std::string& kind) const {
+    for (const auto& f : loader_.faults()) {
+      if (f.kind == kind) return &f;
+    }
+    return nullptr;
+  }
+  double column_force_at(double qbar_pa) {
+    writers_.qbar_pa = qbar_pa;
+    seconds(3.0);
+    return reader_.latest.pitch().force_n();
+  }
+
+  Writers writers_;
+  ControlLoadingComponent loader_;
+  Reader reader_;
+  runtime::Composition composition_;
+};
+
+TEST_F(ControlLoadingComponentTest, FadesInAndTheColumnGetsHeavierWithDynamicPressure) {
+  composition_.run(3);
+  EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_FADING_IN);
+  seconds(1.0);
+  ASSERT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_ACTIVE);
+  writers_.column = 0.5;
+  const double slow = column_force_at(1000.0);
+  const double fast = column_force_at(8000.0);
+  EXPECT_NEAR(reader_.latest.pitch().position(), 0.5, 0.05);  // the simulated pilot holds it there
+  EXPECT_GT(std::abs(fast), 1.5 * std::abs(slow)) << slow << " N at 1 kPa, " << fast << " N at 8 kPa";
+  EXPECT_FALSE(reader_.latest.pitch_backdriven());
+  EXPECT_EQ(loader_.fault_count(), 0u);
+}
+
+TEST_F(ControlLoadingComponentTest, TheShakerWarnsOfTheStallInFlightOnly) {
+  seconds(1.0);
+  EXPECT_FALSE(reader_.latest.stick_shaker());
+  writers_.alpha_rad = 0.30;  // beyond the 737's 0.24 rad shaker angle
+  seconds(0.5);
+  EXPECT_TRUE(reader_.latest.stick_shaker());
+  writers_.on_ground = true;  // the same angle on the ground: inhibited
+  seconds(0.5);
+  EXPECT_FALSE(reader_.latest.stick_shaker());
+}
+
+TEST_F(ControlLoadingComponentTest, TheAutopilotBackDrivesTheColumn) {
+  seconds(1.0);
+  writers_.autopilot_elevator = -0.3;  // nose up: column aft
+  seconds(3.0);
+  EXPECT_TRUE(reader_.latest.pitch_backdriven());
+  EXPECT_FALSE(reader_.latest.yaw_backdriven());  // the pedals only in rollout
+  EXPECT_NEAR(reader_.latest.pitch().position(), -0.3, 0.05);
+  // Negative control: disengaged, the pilot's (centred) column again.
+  writers_.autopilot_elevator.reset();
+  seconds(0.1);
+  EXPECT_FALSE(reader_.latest.pitch_backdriven());
+  seconds(3.0);
+  EXPECT_NEAR(reader_.latest.pitch().position(), 0.0, 0.05);
+}
+
+TEST_F(ControlLoadingComponentTest, ANanSampleAndTheInstructorCutItOffByName) {
+  seconds(1.0);
+  writers_.nan = true;
+  composition_.run(3);
+  EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_SAFE);
+  EXPECT_NE(std::string(reader_.latest.cut_off_reason()).find("qbar_pa not finite"), std::string::npos)
+      << reader_.latest.cut_off_reason();
+  ASSERT_NE(fault("input_rejected"), nullptr);
+  ASSERT_NE(fault("control_loading_cut_off"), nullptr);
+
+  writers_.nan = false;
+  composition_.command(cut(false));  // restore: engages again
+  seconds(1.0);
+  EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_ACTIVE);
+  composition_.command(cut(true));
+  composition_.run(2);
+  EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_SAFE);
+  EXPECT_EQ(std::string(reader_.latest.cut_off_reason()), "instructor cut-off");
+  seconds(1.0);
+  EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_SAFE);  // stays cut off until restored
+}
+
+}  // namespace
+}  // namespace fedsim::control_loading
