@@ -1,4 +1,5 @@
 #include "fedsim/command_cli.hpp"
+#include "common/runtime/failure_targets.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 
@@ -253,13 +254,16 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     auto* f = cmd->add_subcommand(fail ? "fail" : "restore",
                                   fail ? "fail a system, e.g. engine1" : "restore a failed system");
     add_common_options(*f, *o);
-    f->add_option("system", o->target,
-                  "system: engine1..engine4, autopilot, autothrottle (flight; the autopilot with "
-                  "--autopilot); nav1, nav2, adf, markers, ins, gps (denied), "
-                  "station:<IDENT>, station-dme:<IDENT>, station-gs:<IDENT>, "
-                  "station-markers:<IDENT> (navigation); motion, control_loading (cut-off)")
+    f->add_option("system", o->target, std::string("system: ") + runtime::failure_targets_description())
         ->required();
     f->callback([o, fail, &exit_code] {
+      if (!runtime::failure_target_owner(o->target)) {
+        // Refused here: no federate would act on it, and nothing would say so.
+        std::cerr << "fedsim command: unknown system '" << o->target << "'; one of: "
+                  << runtime::failure_targets_description() << "\n";
+        exit_code = 2;
+        return;
+      }
       msg::SimCommand c;
       c.kind(msg::COMMAND_FAILURE);
       c.target(o->target);
