@@ -8,7 +8,9 @@
 //
 // The pilot: no force sensor is on a topic yet, so the simulated pilot of the model holds each
 // control where fedsim/pilot_controls puts it (elevator, aileron, rudder; trims move the datum):
-// the loader then reports the force that takes against the feel. The autopilot back-drives the
+// the loader then reports the force that takes against the feel. (With the flight federate's
+// --controls relative, those primaries are offsets from the trimmed surfaces: the loader shows
+// them about its centre, the trim datum following the trim controls.) The autopilot back-drives the
 // column and wheel while CMD is engaged, the pedals in rollout (fedsim/autopilot_state, monitored:
 // a federation without the autopilot is not held back; a state 3 frames old no longer drives);
 // meanwhile the pilot is hands and feet off.
