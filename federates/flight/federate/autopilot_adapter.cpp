@@ -17,7 +17,11 @@ std::string out_of_range(const char* field, double value, const char* range) {
 
 std::optional<std::string> check_mcp(const msg::McpPanel& m) {
   constexpr double kDeg = units::kDegToRad;
-  if (!std::isfinite(m.heading_true_rad())) return out_of_range("heading_true_rad", m.heading_true_rad(), "finite");
+  // One turn either way (the I/O sends 0..2 pi; an outside writer may send -pi..pi): 1e300 is
+  // finite but no heading.
+  if (!in(m.heading_true_rad(), -units::kTwoPi, units::kTwoPi)) {
+    return out_of_range("heading_true_rad", m.heading_true_rad(), "within -2 pi..2 pi rad");
+  }
   if (!in(m.altitude_msl_m(), -1000.0, 20000.0)) {
     return out_of_range("altitude_msl_m", m.altitude_msl_m(), "within -1000..20000 m");
   }

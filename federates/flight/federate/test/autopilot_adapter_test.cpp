@@ -32,6 +32,10 @@ TEST(CheckMcp, AcceptsAGoodPanelAndNamesTheFieldOfABadOne) {
   nan_heading.heading_true_rad(std::numeric_limits<double>::quiet_NaN());
   ASSERT_TRUE(check_mcp(nan_heading).has_value());
   EXPECT_NE(check_mcp(nan_heading)->find("heading_true_rad"), std::string::npos);
+  msg::McpPanel huge_heading = good_panel();
+  huge_heading.heading_true_rad(1e300);  // finite, but no heading
+  ASSERT_TRUE(check_mcp(huge_heading).has_value());
+  EXPECT_NE(check_mcp(huge_heading)->find("heading_true_rad"), std::string::npos);
 
   msg::McpPanel inf_altitude = good_panel();
   inf_altitude.altitude_msl_m(std::numeric_limits<double>::infinity());
