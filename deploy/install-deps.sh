@@ -14,6 +14,8 @@ PACKAGES=(
   libsqlite3-dev zlib1g-dev
   # rendering, plots, images
   libosmesa6-dev libpng-dev gnuplot-nox graphviz
+  # pilot inceptors: joysticks, yokes, pedals through evdev (and uinput virtual devices in tests)
+  libevdev-dev
   # tests
   libgtest-dev libgmock-dev
   # process tools used by tests (pgrep/pkill) and network namespaces

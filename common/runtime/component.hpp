@@ -184,6 +184,14 @@ class Component {
   virtual void step(const FrameContext& frame) = 0;
   /// Once, after the last step (flush files here).
   virtual void on_stop() {}
+  /// The tick watchdog, realtime only: when no frame tick has arrived for more than this many
+  /// frame periods (0: never), the host calls on_ticks_stopped() from its frame thread, at once
+  /// and then on every wake-up (about every 20 ms) until a tick comes. For what must go safe on
+  /// its own when the federation stops driving it (control loading, motion): with no tick,
+  /// step() never runs. Lockstep has no such watch: its time stops with the ticks.
+  virtual double tick_watchdog_periods() const { return 0.0; }
+  /// `last`: the context of the last frame stepped; `silent_s`: wall time since its tick.
+  virtual void on_ticks_stopped(const FrameContext& last, double silent_s) {}
 
   /// The faults reported so far, by kind.
   const std::vector<FaultReport>& faults() const { return faults_; }

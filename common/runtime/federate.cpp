@@ -236,6 +236,7 @@ void Federate::handle_tick(const msg::FrameTick& tick) {
   }
   pending_tick_ = tick;
   pending_ = true;
+  last_tick_arrival_ns_ = util::monotonic_ns();
   const bool ready = inputs_ready_locked(tick.frame());
   lock.unlock();
   if (ready) frame_bell_.ring();
@@ -304,6 +305,7 @@ void Federate::run_frame(const msg::FrameTick& tick, bool late) {
     stepped_any_ = true;
     stepping_ = false;
     last_frame_ = ctx.frame;
+    last_stepped_ = ctx;
     last_compute_us_ = compute_us;
     last_latency_ns_ = latency_ns;
     frame_limit = options_.max_frames != 0 && stats_.frames >= options_.max_frames;
@@ -402,6 +404,34 @@ int Federate::run(Component& component) {
   return exit_code_.load();
 }
 
+// Frame thread, between frames: the tick watchdog (Component::tick_watchdog_periods). Returns
+// how long the loop may sleep before the watch must look again.
+std::chrono::nanoseconds Federate::watch_ticks() {
+  const double periods = component_->tick_watchdog_periods();
+  if (!(periods > 0.0)) return kLoopWakeup;
+  FrameContext last;
+  std::uint64_t arrival_ns = 0;
+  {
+    std::lock_guard lock(frame_mutex_);
+    if (!stepped_any_ || pending_ || stepping_ || stopping_) return kLoopWakeup;
+    last = last_stepped_;
+    arrival_ns = last_tick_arrival_ns_;
+  }
+  if (last.mode != msg::TIMING_MODE_REALTIME || !(last.frame_period_s > 0.0)) return kLoopWakeup;
+  const double silent_s = static_cast<double>(util::monotonic_ns() - arrival_ns) * 1e-9;
+  const double limit_s = periods * last.frame_period_s;
+  if (silent_s < limit_s) {
+    return std::chrono::nanoseconds(static_cast<std::int64_t>((limit_s - silent_s) * 1e9) + 1);
+  }
+  try {
+    component_->on_ticks_stopped(last, silent_s);
+  } catch (const std::exception& e) {
+    log_->error("the tick watchdog's handler failed: {}", e.what());
+    fail(std::string("tick watchdog handler failed: ") + e.what());
+  }
+  return kLoopWakeup;
+}
+
 void Federate::frame_loop() {
   const std::uint64_t deadline_ns =
       options_.duration_s > 0 ? start_ns_ + static_cast<std::uint64_t>(options_.duration_s * 1e9)
@@ -421,7 +451,7 @@ void Federate::frame_loop() {
     bool take = false;
     bool late = false;
     const std::uint32_t rang = frame_bell_.value();  // before looking: no wake-up is lost
-    std::chrono::nanoseconds wait = kLoopWakeup;
+    std::chrono::nanoseconds wait = std::min<std::chrono::nanoseconds>(kLoopWakeup, watch_ticks());
     {
       std::lock_guard lock(frame_mutex_);
       if (pending_ && !stopping_ && !stop_requested_.load()) {

@@ -28,6 +28,7 @@
 #include <spdlog/logger.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -119,6 +120,7 @@ class Federate {
   void publish_status(msg::FederateState state, const std::string& message);
   void wait_for_inputs_to_match();
   void frame_loop();
+  std::chrono::nanoseconds watch_ticks();
   void finish();
   double input_timeout_s(const msg::FrameTick& tick) const;
 
@@ -152,6 +154,8 @@ class Federate {
   bool stepping_ = false;               // the frame thread is inside run_frame
   std::uint64_t stepping_frame_ = 0;
   bool stepped_any_ = false;
+  std::uint64_t last_tick_arrival_ns_ = 0;  // monotonic time the latest new tick arrived
+  FrameContext last_stepped_;               // the context of the last frame stepped
   std::uint64_t last_frame_ = 0;        // last frame acknowledged
   float last_compute_us_ = 0.0f;
   std::uint64_t last_latency_ns_ = 0;

@@ -1,5 +1,7 @@
 #include "control_loading/control_loading_component.hpp"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,7 +50,17 @@ std::optional<std::string> inputs_from_messages(const msg::AircraftState& aircra
   }
   for (auto& a : in.axes) a.backdrive_active = false;
   in.pilot_source = PilotSource::kSimulatedPilot;
-  if (autopilot != nullptr && (autopilot->fma().autopilot_engaged() || autopilot->rollout_engaged())) {
+  const bool sensors = pilot != nullptr && (pilot->discretes() & msg::DISCRETE_FORCE_SENSORS) != 0;
+  if (sensors) {
+    // The loop with the I/O federate: the pilot's hands are the force sensors' readings (the
+    // model checks their range), whoever else drives the controls.
+    in.pilot_source = PilotSource::kForceSensor;
+    for (int i = 0; i < kAxisCount; ++i) {
+      const double f = pilot->pilot_force_n()[static_cast<std::size_t>(i)];
+      if (!finite(f)) return std::string("pilot_controls pilot_force_n not finite");
+      in.axes[i].pilot_force_n = f;
+    }
+  } else if (autopilot != nullptr && (autopilot->fma().autopilot_engaged() || autopilot->rollout_engaged())) {
     // While the autopilot flies, the pilot is hands and feet off (no force on any control): the
     // back-driven controls follow the servo, the others rest at their trim datum.
     in.pilot_source = PilotSource::kForceSensor;
@@ -142,6 +154,20 @@ void ControlLoadingComponent::report_status_change(const runtime::FrameContext& 
   log().info("control loading t={:.2f}s {} -> {}{}", frame.sim_time_s, to_string(last_status_), to_string(now),
              now == LoaderStatus::kSafe ? " (" + loader_.cut_off_reason() + ")" : std::string());
   last_status_ = now;
+}
+
+void ControlLoadingComponent::on_ticks_stopped(const runtime::FrameContext& last, double silent_s) {
+  if (loader_.status() == LoaderStatus::kSafe) return;
+  char why[96];
+  std::snprintf(why, sizeof why, "no frame tick for %.0f ms after frame %llu", silent_s * 1000.0,
+                static_cast<unsigned long long>(last.frame));
+  loader_.cut_off(why);
+  report_status_change(last);
+  // The SAFE state goes out now: the loader's own readers (a hardware driver) must not wait for
+  // a frame that is not coming.
+  to_message(loader_.outputs(), inputs_, loader_.cut_off_reason(), sample_);
+  sample_.stamp(last.end_stamp());
+  control_loading_state_.write(sample_);
 }
 
 void ControlLoadingComponent::step(const runtime::FrameContext& frame) {

@@ -6,9 +6,12 @@
 // autopilot's commands, and fedsim/control_loading_state carries each control's position,
 // velocity, felt force and trim datum.
 //
-// The pilot: no force sensor is on a topic yet, so the simulated pilot of the model holds each
-// control where fedsim/pilot_controls puts it (elevator, aileron, rudder; trims move the datum):
-// the loader then reports the force that takes against the feel. (With the flight federate's
+// The pilot: with force sensors (fedsim/pilot_controls carries DISCRETE_FORCE_SENSORS and
+// pilot_force_n: the I/O federate's --loader-in-the-loop) the pilot's forces move the controls
+// against the feel, and the I/O federate reports the positions as the primaries
+// (io_component.hpp documents the loop). Without them the simulated pilot of the model holds
+// each control where fedsim/pilot_controls puts it (elevator, aileron, rudder; trims move the
+// datum): the loader then reports the force that takes against the feel. (With the flight federate's
 // --controls relative, those primaries are offsets from the trimmed surfaces: the loader shows
 // them about its centre, the trim datum following the trim controls.) The autopilot back-drives the
 // column and wheel while CMD is engaged, the pedals in rollout (fedsim/autopilot_state, monitored:
@@ -17,7 +20,8 @@
 //
 // Engages once the first valid aircraft state arrives (--engage). Cut off to SAFE within the
 // frame, reported by name: a non-finite sample ("input_rejected"), flight data older than the
-// watchdog, an overspeed ("control_loading_cut_off"), the instructor (`fedsim command fail
+// watchdog, an overspeed, frame ticks that stop arriving in realtime (the host's tick watchdog,
+// 1.5 frame periods: "control_loading_cut_off"), the instructor (`fedsim command fail
 // control_loading`; `restore control_loading` engages it again).
 #pragma once
 
@@ -51,6 +55,12 @@ class ControlLoadingComponent final : public runtime::Component {
 
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
+  /// Realtime: no tick for 1.5 frame periods (the next one half a frame late) cuts the loader
+  /// off, reported as control_loading_cut_off, and publishes the SAFE state; it stays SAFE
+  /// until `fedsim command restore control_loading` (a loader does not re-engage on its own).
+  double tick_watchdog_periods() const override { return kTickWatchdogPeriods; }
+  void on_ticks_stopped(const runtime::FrameContext& last, double silent_s) override;
+  static constexpr double kTickWatchdogPeriods = 1.5;
 
   const ControlLoading& loader() const { return loader_; }
 

@@ -1,5 +1,7 @@
 #include "motion/motion_component.hpp"
 
+#include <cstdio>
+
 #include "common/util/cli_checks.hpp"
 #include "motion/model/motion_parameter_file.hpp"
 
@@ -129,7 +131,29 @@ void MotionComponent::report_status_change(const runtime::FrameContext& frame) {
   last_status_ = now;
 }
 
+void MotionComponent::on_ticks_stopped(const runtime::FrameContext& last, double silent_s) {
+  if (!platform_) return;
+  if (platform_->status() != MotionStatus::kFault && platform_->status() != MotionStatus::kParked) {
+    char why[96];
+    std::snprintf(why, sizeof why, "no frame tick for %.0f ms after frame %llu", silent_s * 1000.0,
+                  static_cast<unsigned long long>(last.frame));
+    platform_->trip(why);
+  }
+  // The park goes on at the frame period, as many steps as the silence has lasted: the last
+  // frame's inputs are held (the washout's demand is ignored in a fault; the park path rules).
+  const auto due = static_cast<std::uint64_t>(silent_s / platform_dt_s_);
+  while (park_steps_without_ticks_ < due) {
+    ++park_steps_without_ticks_;
+    platform_->step(inputs_);
+    report_status_change(last);  // (simulation time does not advance without ticks)
+    to_message(platform_->outputs(), platform_->fault_reason(), sample_);
+    sample_.stamp(last.end_stamp());
+    motion_state_.write(sample_);
+  }
+}
+
 void MotionComponent::step(const runtime::FrameContext& frame) {
+  park_steps_without_ticks_ = 0;
   if (!platform_ || std::abs(platform_dt_s_ - frame.dt_s) > 1e-9) {
     // Built at the federation's frame period: the washout's filters and the actuator sub-steps
     // depend on it (validate() names the field a period makes invalid).

@@ -45,6 +45,12 @@ class MotionComponent final : public runtime::Component {
 
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
+  /// Realtime: no tick for 1.5 frame periods trips the platform ("motion_fault": its park
+  /// starts within that time), and the platform's own controller keeps stepping the park at
+  /// the frame period on the wall clock, publishing each step, until the ticks come back.
+  double tick_watchdog_periods() const override { return kTickWatchdogPeriods; }
+  void on_ticks_stopped(const runtime::FrameContext& last, double silent_s) override;
+  static constexpr double kTickWatchdogPeriods = 1.5;
 
   /// The platform (nullptr before the first frame: it is built at the federation's period).
   const MotionPlatform* platform() const { return platform_.get(); }
@@ -68,6 +74,7 @@ class MotionComponent final : public runtime::Component {
   bool have_inputs_ = false;
   std::uint64_t updates_seen_ = 0;
   int silent_frames_ = 0;
+  std::uint64_t park_steps_without_ticks_ = 0;  // wall-clock park steps since the last tick
   bool instructor_cut_ = false;         // failed by the instructor, until restored
   bool restore_requested_ = false;      // restored: clear the fault once down, then engage
   bool engage_wanted_ = false;          // engage when parked (start, or after a restore)

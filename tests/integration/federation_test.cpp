@@ -6,6 +6,7 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
+#include "common/runtime/topic_catalogue.hpp"
 #include "common/csv/csv_reader.hpp"
 #include "io/model/input_profile.hpp"
 
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <mutex>
 #include <thread>
 
 namespace fedsim::testing {
@@ -617,6 +619,105 @@ federates:
   EXPECT_GT(dme_m.front(), *closest + 3000.0);
   EXPECT_GT(dme_m.back(), *closest + 1000.0);
   EXPECT_LT(*closest, 1200.0);  // overhead: about the height above the station (3000 ft)
+}
+
+
+// The safety cut-offs on lost ticks, in realtime over DDS: the timing federate is stopped
+// (SIGSTOP) in the middle of a run; with no tick, neither the control loader nor the motion
+// platform is stepped, and the host's tick watchdog cuts the loader off (its SAFE state
+// published at once) and trips the platform, whose own controller parks it on the wall clock.
+// Negative control: before the stop both are engaged.
+TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
+  const int domain = 152;
+  const std::string dir = temp_dir("ticks-stop");
+  std::ofstream(dir + "/profile.csv") << "time_s,elevator\n0,0\n";
+  struct Seen {
+    std::mutex mutex;
+    double last_tick_s = 0.0, first_safe_s = -1.0;
+    bool loader_was_active = false, motion_was_engaged = false;
+    int safe_samples_after_stop = 0;
+    std::string cut_off_reason, fault_reason;
+    std::vector<double> fault_mean_jack_m;  // motion samples in FAULT, in arrival order
+    bool stopped = false;
+  } seen;
+  const auto wall_s = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+  auto dds = instructor_participant(domain);
+  runtime::Subscription<msg::FrameTick> ticks(dds, runtime::topics::frame_tick, {},
+                                              [&](const msg::FrameTick&, const auto&) {
+                                                std::lock_guard lock(seen.mutex);
+                                                seen.last_tick_s = wall_s();
+                                              });
+  runtime::Subscription<msg::ControlLoadingState> loader(
+      dds, runtime::topics::control_loading_state, {}, [&](const msg::ControlLoadingState& m, const auto&) {
+        std::lock_guard lock(seen.mutex);
+        if (m.status() == msg::CONTROL_LOADING_ACTIVE) seen.loader_was_active = true;
+        if (m.status() == msg::CONTROL_LOADING_SAFE && seen.stopped) {
+          if (seen.first_safe_s < 0) seen.first_safe_s = wall_s();
+          ++seen.safe_samples_after_stop;
+          seen.cut_off_reason = m.cut_off_reason().to_string();
+        }
+      });
+  runtime::Subscription<msg::MotionPlatformState> motion(
+      dds, runtime::topics::motion_state, {}, [&](const msg::MotionPlatformState& m, const auto&) {
+        std::lock_guard lock(seen.mutex);
+        if (m.status() == msg::MOTION_ENGAGED) seen.motion_was_engaged = true;
+        if (m.status() == msg::MOTION_FAULT && seen.stopped) {
+          double mean = 0.0;
+          for (double l : m.jack_length_m()) mean += l / 6.0;
+          seen.fault_mean_jack_m.push_back(mean);
+          seen.fault_reason = m.fault_reason().to_string();
+        }
+      });
+  auto io = start(dir, "io", domain, "fedsim-io", {"--profile", dir + "/profile.csv"});
+  auto flight = start(dir, "flight", domain, "fedsim-flight",
+                      {"--aircraft", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", "--trim", "level",
+                       "--alt-ft", "3000", "--ktas", "100"});
+  auto cl = start(dir, "control_loading", domain, "fedsim-control-loading", {});
+  auto mo = start(dir, "motion", domain, "fedsim-motion", {});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "realtime", "--rate", "50", "--expect", "io,flight,control_loading,motion",
+                       "--duration", "30", "--shutdown-on-exit"});
+  // Until both are engaged (the motion takes 5-6.5 s to rise to neutral), at most 20 s.
+  for (int i = 0; i < 1000; ++i) {
+    {
+      std::lock_guard lock(seen.mutex);
+      if (seen.loader_was_active && seen.motion_was_engaged) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  {
+    std::lock_guard lock(seen.mutex);
+    ASSERT_TRUE(seen.loader_was_active) << "the loader never engaged:\n" << cl->output();
+    ASSERT_TRUE(seen.motion_was_engaged) << "the motion never engaged:\n" << mo->output();
+  }
+  kill(timing->pid(), SIGSTOP);
+  {
+    std::lock_guard lock(seen.mutex);
+    seen.stopped = true;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(timing->pid(), SIGCONT);
+  double cut_after_s = 0.0;
+  {
+    std::lock_guard lock(seen.mutex);
+    ASSERT_GT(seen.first_safe_s, 0.0) << "no SAFE control-loading state after the ticks stopped:\n" << cl->output();
+    cut_after_s = seen.first_safe_s - seen.last_tick_s;
+    EXPECT_EQ(seen.cut_off_reason.rfind("no frame tick for", 0), 0u) << seen.cut_off_reason;
+    EXPECT_EQ(seen.fault_reason.rfind("no frame tick for", 0), 0u) << seen.fault_reason;
+    // The platform kept parking with no tick: about 50 samples a second, the jacks retracting.
+    ASSERT_GT(seen.fault_mean_jack_m.size(), 40u);
+    EXPECT_LT(seen.fault_mean_jack_m.back(), seen.fault_mean_jack_m.front() - 0.01);
+  }
+  std::printf("ticks stopped: the loader's SAFE state arrived %.1f ms after the last tick (50 Hz, watchdog 1.5 frames)\n",
+              cut_after_s * 1000.0);
+  EXPECT_LT(cut_after_s, 0.5);  // behaviour, not a timing goal: it came without a tick
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  timing->terminate();  // --shutdown-on-exit: the federation stops with it
+  ASSERT_TRUE(timing->wait(30)) << timing->output();
+  for (auto* p : {io.get(), flight.get(), cl.get(), mo.get()}) ASSERT_TRUE(p->wait(15));
+  EXPECT_NE(cl->output().find("control_loading_cut_off"), std::string::npos) << cl->output();
+  EXPECT_NE(mo->output().find("motion_fault"), std::string::npos) << mo->output();
+  EXPECT_EQ(cl->exit_code(), 1);  // a fault shows in the exit status
 }
 
 

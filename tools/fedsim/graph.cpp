@@ -68,7 +68,9 @@ GraphNode component_node(const FederateSpec& f, const std::vector<std::string>& 
   GraphNode node{f.name, binary, {}, true};
   for (const auto& port : component->ports()) {
     const runtime::PortInfo& p = port->info();
-    node.ports.push_back({p.topic->name, p.direction, p.qos, p.lockstep_input});
+    GraphNode::Port out{p.topic->name, p.direction, p.qos, p.lockstep_input};
+    out.monitor = p.direction == runtime::PortDirection::kRead && p.topic->lockstep_input && !p.lockstep_input;
+    node.ports.push_back(out);
   }
   return node;
 }
@@ -129,7 +131,11 @@ void check(DataFlowGraph& graph, const QosProfiles& qos, bool lockstep) {
   for (const auto& [topic, use] : uses_of(graph)) {
     if (use.writers.empty()) {
       for (const auto& [reader, port] : use.readers) {
-        graph.problems.push_back(reader->name + " reads " + topic + " and no federate writes it");
+        if (port->monitor) {  // an optional input (the loader's autopilot back-drive)
+          graph.notes.push_back(reader->name + " monitors " + topic + ": no federate writes it here");
+        } else {
+          graph.problems.push_back(reader->name + " reads " + topic + " and no federate writes it");
+        }
       }
     }
     if (use.readers.empty()) graph.notes.push_back(topic + " is written and read by nobody here");

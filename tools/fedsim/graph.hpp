@@ -25,6 +25,7 @@ struct GraphNode {
     std::string qos;    // profile; "(writer's)" for a recorder that matches its writer
     bool lockstep_input = false;
     bool best_effort = false;  // writes: the profile's reliability is best effort
+    bool monitor = false;      // reads: a frame topic read without holding the frame (optional)
   };
   std::vector<Port> ports;
   bool ports_known = true;  // false for a binary whose ports fedsim cannot know

@@ -1,10 +1,11 @@
 // fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
 // `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
 // `fedsim topic list|echo|hz` and `fedsim record` monitor and record live topics; `fedsim nav
-// find|near` looks up the navigation database.
+// find|near` looks up the navigation database; `fedsim io calibrate` calibrates an inceptor.
 #include "fedsim/command_cli.hpp"
 #include "common/util/cli_checks.hpp"
 #include "fedsim/graph.hpp"
+#include "fedsim/io_cli.hpp"
 #include "fedsim/launcher.hpp"
 #include "fedsim/nav_cli.hpp"
 #include "topic/topic_commands.hpp"
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   fedsim::launcher::add_graph_command(app, exit_code);
   fedsim::tools::add_topic_commands(app);
   fedsim::launcher::add_nav_commands(app, exit_code, std::cout, std::cerr);
+  fedsim::launcher::add_io_commands(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }

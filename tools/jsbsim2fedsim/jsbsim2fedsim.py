@@ -5,8 +5,9 @@ Usage:
   jsbsim2fedsim.py AIRCRAFT.xml --output PACK.yaml [--engine-dir DIR] [--jsbsim-root DIR]
                    [--commit SHA] [--name NAME] [--calibration OVERLAY.yaml]
 
-Reads the aircraft file and the engine, propeller and thruster files it names (from
---engine-dir, by default <jsbsim-root>/engine), converts every figure to SI in fedsim's pack
+Reads the aircraft file, the engine, propeller and thruster files it names (from
+--engine-dir, by default <jsbsim-root>/engine) and its autopilot file (next to it; only a wing
+leveller is translated, see jsbsim_autopilot.py), converts every figure to SI in fedsim's pack
 frame (body axes x forward, y right, z down, metres from the JSBSim structural origin; JSBSim's
 structural frame is x aft, y right, z up, usually inches) and translates the aerodynamic
 functions into fedsim coefficient terms. Whatever it cannot translate is listed on stderr and in
@@ -25,6 +26,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import calibration  # noqa: E402
 import jsbsim_aero  # noqa: E402
+import jsbsim_autopilot  # noqa: E402
 import jsbsim_fcs  # noqa: E402
 import jsbsim_xml as jx  # noqa: E402
 from pack_yaml import Commented, document  # noqa: E402
@@ -56,6 +58,8 @@ class Converter:
         self.aero_properties = {e.text.strip().lstrip("-") for e in self.aero_element.iter()
                                 if e.tag in jx.PROPERTY_TAGS or e.tag == "independentVar"}
         self.surfaces = {}
+        self.autopilots = []  # (label, file read or None, <autopilot> root or None, placeholder note)
+        self.wing_leveller = None
         self._note_skipped_sections()
 
     def _note_skipped_sections(self):
@@ -63,8 +67,29 @@ class Converter:
             self.notes.append("JSBSim <system> '%s' is not translated (systems belong to "
                               "fedsim's own models)" % (system.get("name") or system.get("file")))
         for ap in self.root.findall("autopilot"):
-            self.notes.append("JSBSim <autopilot> '%s' is not translated" %
-                              (ap.get("name") or ap.get("file")))
+            # Replaced once flight_controls() has looked for a wing leveller in it.
+            label = ap.get("name") or ap.get("file")
+            path, root = self._autopilot_root(ap)
+            placeholder = "JSBSim <autopilot> '%s' is not translated" % label
+            if root is None:
+                placeholder += " (its file %s is not next to the aircraft file)" % ap.get("file")
+            self.notes.append(placeholder)
+            self.autopilots.append((label, path, root, placeholder))
+
+    def _autopilot_root(self, ap):
+        """(path, root) of an <autopilot>: inline, or its file="..." next to the aircraft file
+        (JSBSim looks there, then in its Systems folder); (None, None) if not found."""
+        name = ap.get("file")
+        if not name:
+            return None, ap
+        if not name.endswith(".xml"):
+            name += ".xml"
+        folder = os.path.dirname(self.files_read[0])
+        for path in (os.path.join(folder, name), os.path.join(folder, "Systems", name)):
+            if os.path.exists(path):
+                self.files_read.append(path)
+                return path, jx.parse(path)
+        return None, None
 
     # -- metadata and geometry ------------------------------------------------------------
     def geometry(self):
@@ -177,7 +202,11 @@ class Converter:
             k = self._unit_factor(prop)
             damper = self.fcs.yaw_damper(prop, command, sign, self.notes) if surface == "rudder" else None
             translated = (jsbsim_fcs.YAW_RATE,) if damper else ()
-            s = self.fcs.surface(prop, command, sign, self.notes, translated)
+            if surface == "aileron":
+                self.wing_leveller = self._find_wing_leveller(prop)
+            leveller_input = (self.wing_leveller.fcs_input,) if surface == "aileron" and \
+                self.wing_leveller else ()
+            s = self.fcs.surface(prop, command, sign, self.notes, translated, leveller_input)
             self.surfaces[surface] = (prop, s, k)
             out[surface] = self._surface_entry(s, k)
             if damper:
@@ -186,6 +215,10 @@ class Converter:
             kind, rate = self.pitch_trim
             out["pitch_trim"] = {"kind": kind, "rate_per_s": Commented(
                 rate, "fedsim's figure (--pitch-trim): JSBSim files give no trim rate")}
+        if "aileron" not in out:
+            self._place_autopilot_notes(None, {})
+        if self.wing_leveller:
+            out["wing_leveller"] = self._wing_leveller_entry(self.wing_leveller)
         for surface, prop_candidates in (("flaps", ["fcs/flap-pos-deg", "fcs/flap-pos-rad", "fcs/flap-pos-norm"]),
                                          ("speedbrake", ["fcs/speedbrake-pos-norm"]),
                                          ("spoilers", ["fcs/spoiler-pos-norm"])):
@@ -206,6 +239,113 @@ class Converter:
         return {"gain_per_radps": {"row": "mach", "row_breakpoints": damper["mach"],
                                    "values": [g if abs(g) > 1e-12 else 0.0 for g in damper["gain_per_radps"]]},
                 "engaged_at_start": True}
+
+    def _find_wing_leveller(self, aileron_prop):
+        """The first autopilot's wing leveller acting on the aileron (jsbsim_autopilot), its
+        findings in place of the autopilots' placeholder notes."""
+        found, reasons = None, {}
+        fc = self.root.find("flight_control")
+        for label, path, root, _ in self.autopilots:
+            if root is None or found:
+                continue
+            defaults = jsbsim_autopilot.property_defaults(root, fc)
+            try:
+                found = jsbsim_autopilot.find(root, self.fcs, aileron_prop, defaults)
+                found.label, found.file, found.root = label, path, root
+            except jsbsim_autopilot.NotTranslated as e:
+                reasons[label] = str(e)
+        self._place_autopilot_notes(found, reasons)
+        return found
+
+    def _place_autopilot_notes(self, found, reasons):
+        for label, _, root, placeholder in self.autopilots:
+            if placeholder not in self.notes:
+                continue
+            at = self.notes.index(placeholder)
+            if found is not None and found.label == label:
+                self.notes[at:at + 1] = self._wing_leveller_notes(found)
+            elif root is not None:
+                why = reasons.get(label, "the pack has no aileron" if found is None else
+                                  "the wing leveller comes from another autopilot")
+                self.notes[at] = "%s: no wing leveller (%s)" % (placeholder, why)
+
+    def _wing_leveller_notes(self, w):
+        """What of the autopilot the pack carries, what it leaves out, and where fedsim's wing
+        leveller departs from JSBSim's PID."""
+        parts = jsbsim_autopilot.parts_of(w.root)
+        used = {p.name for p in [w.pid] + w.switches + ([w.trigger] if w.trigger else [])}
+        channels, sensors = [], []
+        for channel in dict.fromkeys(p.channel for p in parts):
+            members = [p for p in parts if p.channel == channel]
+            on = [p.name for p in members if p.name in used]
+            off = [p for p in members if p.name not in used]
+            sensors += [p for p in off if p.type == "sensor"]
+            if not on:
+                channels.append("'%s'" % channel)
+            elif any(p.type != "sensor" for p in off):
+                channels.append("'%s' (all but %s, on the wing leveller's path)" %
+                                (channel, ", ".join("'%s'" % n for n in on)))
+        head = "JSBSim <autopilot> '%s'" % w.label
+        notes = ["%s: its wing leveller (<pid> '%s' on %s, through %s to %s of FCS summer '%s') is "
+                 "translated as flight_controls.wing_leveller, engaged by the pilot's wing-leveller "
+                 "switch (fedsim's for JSBSim's %s)%s" % (
+                     head, w.pid.name, jsbsim_autopilot.BANK,
+                     ", ".join("switch '%s'" % p.name for p in w.switches), w.fcs_input,
+                     w.summer.name, w.engage,
+                     ("; not translated: channel%s %s" % ("s" if len(channels) > 1 else "",
+                                                          ", ".join(channels))) if channels else "")]
+        for sensor in sensors:
+            what = [c.tag for c in sensor.element if c.tag not in ("input", "output")]
+            notes.append("%s: sensor '%s'%s is not on the wing leveller's path (its PID reads %s) "
+                         "and is not translated" % (
+                             head, sensor.name, " (%s)" % ", ".join(what) if what else "",
+                             jsbsim_autopilot.BANK))
+        differences = []
+        if w.trigger is not None or not w.trigger_name:
+            differences.append("fedsim stops the integral while the summed aileron command is "
+                               "saturated (JSBSim's PID '%s' has no anti-windup here)" % w.pid.name)
+        else:
+            differences.append("the PID's trigger %s is not translated (fedsim resets the integral "
+                               "while disengaged and stops it while the summed aileron command is "
+                               "saturated)" % w.trigger_name)
+        if not w.trigger_name:
+            differences.append("JSBSim's PID has no trigger, so its integral is never reset; "
+                               "fedsim's is reset while disengaged")
+        if w.rate_from is None:
+            differences.append("fedsim uses the Euler-angle rate dphi/dt for the D term where "
+                               "JSBSim takes the backward difference of phi between frames")
+        if w.gains["ki"][0] != 0.0 and w.integration != "rect":
+            differences.append("fedsim integrates by the rectangular rule, JSBSim by %s (%s): the "
+                               "same in the limit of small steps" % (
+                                   jsbsim_autopilot.INTEGRATION_RULES.get(w.integration, w.integration),
+                                   "its default for a <ki> without type" if w.integration_default
+                                   else "<ki type=\"%s\">" % w.integration))
+        if w.wow and w.trigger is not None:
+            differences.append("JSBSim's integral runs on the ground while engaged (its trigger "
+                               "tests only %s), fedsim's is reset there (airborne_only)" % w.engage)
+        notes.append("flight_controls.wing_leveller: " + "; ".join(differences))
+        if w.negated:
+            notes.append("flight_controls.wing_leveller: the path passes +'%s' (the aileron gets "
+                         "+(Kp phi + ...)), so the pack's gains are JSBSim's negated" % w.pid.name)
+        return notes
+
+    def _wing_leveller_entry(self, w):
+        """fedsim's wing_leveller section: command = -(Kp phi + Ki integral(phi) + Kd dphi/dt)."""
+        flip = -1.0 if w.negated else 1.0
+        where = " (%s '%s')" % (os.path.basename(w.file) if w.file else "<autopilot>", w.pid.name)
+        out = {}
+        for key, tag in (("bank_gain_per_rad", "kp"), ("bank_integral_gain_per_rad_s", "ki"),
+                         ("bank_rate_gain_per_radps", "kd")):
+            value, text = w.gains[tag]
+            comment = ("minus " if w.negated and value != 0.0 else "") + text + \
+                (where if tag == "kp" else "")
+            out[key] = Commented(flip * value if value != 0.0 else 0.0, comment)
+        out["airborne_only"] = Commented(bool(w.wow), "; ".join(
+            "'%s' tests %s == 0" % (name, prop) for name, prop in w.wow) if w.wow else
+            "no switch on the path tests gear WOW")
+        out["engaged_at_start"] = Commented(w.engaged_at_start, "JSBSim %s starts at %g" % (
+            w.engage, 1.0 if w.engaged_at_start else 0.0))
+        return out
 
     def _aileron_candidates(self):
         """The fcs property the aerodynamics read for roll control: any aero-used fcs property

@@ -210,10 +210,11 @@ class StaticFcs:
         return {"mach": machs, "gain_per_radps": gains,
                 "components": [c.name for c in path if c.type in ("pure_gain", "scheduled_gain")]}
 
-    def surface(self, prop, command_prop, command_sign, notes, translated=()):
+    def surface(self, prop, command_prop, command_sign, notes, translated=(), translated_inputs=()):
         """Travel, clip and dynamics of property `prop` driven by `command_prop`; a fedsim
         command c sets the JSBSim command to command_sign * c. Components fed by one of the
-        `translated` properties (a yaw damper on the yaw rate) are not reported as left out."""
+        `translated` properties (a yaw damper on the yaw rate) are not reported as left out,
+        nor are the `translated_inputs` (an autopilot output the pack carries)."""
         def value(c, clip):
             return self.run({command_prop: command_sign * c}, clip)[prop]
 
@@ -225,7 +226,7 @@ class StaticFcs:
                              "+-1 only" % (prop, command_prop))
                 break
         clipped_plus, clipped_minus = value(1.0, True), value(-1.0, True)
-        self._note_outside_inputs(prop, command_prop, notes, translated)
+        self._note_outside_inputs(prop, command_prop, notes, translated, translated_inputs)
         actuators = [c for c in self.upstream(prop) if c.type == "actuator"]
         rate, lag = 0.0, 0.0
         for act in actuators:
@@ -243,10 +244,10 @@ class StaticFcs:
                 "clip_min": min(clipped_plus, clipped_minus), "rate": rate, "lag": lag,
                 "actuators": [a.name for a in actuators]}
 
-    def _note_outside_inputs(self, prop, command_prop, notes, translated=()):
+    def _note_outside_inputs(self, prop, command_prop, notes, translated=(), translated_inputs=()):
         """Inputs of the chain other than pilot commands and trims (autopilot outputs, yaw
         dampers fed by body rates...) are feedback laws the pack cannot carry, unless
-        translated (the yaw damper)."""
+        translated (the yaw damper, the wing leveller's autopilot output)."""
         def carried(c):
             return any(self.traces_to(c, t) for t in translated)
         for c in self.upstream(prop):
@@ -254,7 +255,7 @@ class StaticFcs:
                 continue
             for name in (i.lstrip("-") for i in c.inputs):
                 pilot = name == command_prop or (name.startswith("fcs/") and name.endswith("-cmd-norm"))
-                if name not in self.producer and not pilot:
+                if name not in self.producer and not pilot and name not in translated_inputs:
                     notes.append("%s: input %s of FCS %s '%s' is not translated (read as 0)" %
                                  (prop, name, c.type, c.name))
         for c in self.upstream(prop):

@@ -140,13 +140,15 @@ YAW_DAMPER_RUDDER = """    <channel name="Yaw">
 PLAIN_RUDDER = AIRCRAFT[AIRCRAFT.index('    <channel name="Yaw">'):AIRCRAFT.index('    <channel name="Flaps">')].rstrip("\n")
 
 
-def convert(aircraft=None, pitch_trim=None):
+def convert(aircraft=None, pitch_trim=None, files=None):
+    """Sections, notes and sign checks of `aircraft`, with `files` (name -> text) beside it."""
     aircraft = AIRCRAFT if aircraft is None else aircraft
     notes = []
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "testplane.xml")
-        with open(path, "w") as f:
-            f.write(aircraft)
+        for name, text in dict(files or {}, **{"testplane.xml": aircraft}).items():
+            with open(os.path.join(d, name), "w") as f:
+                f.write(text)
         conv = jsbsim2fedsim.Converter(path, d, notes, pitch_trim)
         sections = {"geometry": conv.geometry(), "mass": conv.mass(),
                     "flight_controls": conv.flight_controls(), "aerodynamics": conv.aerodynamics(),
@@ -480,6 +482,66 @@ class PropellerAndCalibrationTest(unittest.TestCase):
                           else "Pilot's Operating Handbook", s["source"])
 
 
+# The test aircraft with the c172x's roll channel (the autopilot's ap/aileron_cmd summed with the
+# pilot's aileron command) and a roll term on the aileron, and the c172ap's wing leveller as an
+# <autopilot> file beside it.
+ROLL_CHANNEL = """    <channel name="Roll">
+      <summer name="fcs/roll-trim-sum"> <input> ap/aileron_cmd </input>
+        <input> fcs/aileron-cmd-norm </input> <input> fcs/roll-trim-cmd-norm </input>
+        <clipto> <min> -1 </min> <max> 1 </max> </clipto> </summer>
+      <aerosurface_scale name="fcs/aileron-control"> <input> fcs/roll-trim-sum </input>
+        <range> <min> -0.3 </min> <max> 0.3 </max> </range>
+        <output> fcs/aileron-pos-rad </output> </aerosurface_scale>
+    </channel>
+"""
+ROLL_AIRCRAFT = AIRCRAFT.replace('    <channel name="Flaps">', ROLL_CHANNEL + '    <channel name="Flaps">').replace(
+    '    <axis name="YAW">', """    <axis name="ROLL">
+      <function name="aero/coefficient/Clda">
+        <product> <property> aero/qbar-area </property> <property> metrics/bw-ft </property>
+          <property> fcs/aileron-pos-rad </property> <value> 0.2 </value> </product> </function>
+    </axis>
+    <axis name="YAW">""").replace("</flight_control>", """</flight_control>
+  <autopilot file="testap"/>""")
+AUTOPILOT = """<?xml version="1.0"?>
+<autopilot name="Test Autopilot">
+  <property> ap/attitude_hold </property>
+  <property value="50.0"> ap/roll-pid-kp </property>
+  <property value="5.0"> ap/roll-pid-ki </property>
+  <property value="17.0"> ap/roll-pid-kd </property>
+  <channel name="Roll wing leveler">
+    <sensor name="fcs/attitude/sensor/phi-rad"> <input> attitude/phi-rad </input>
+      <lag> 0.5 </lag> <bias> 0.001 </bias> </sensor>
+    <switch name="fcs/wing-leveler-ap-on-off"> <default value="-1"/>
+      <test value="0"> ap/attitude_hold == 1 </test> </switch>
+    <pid name="fcs/roll-ap-error-pid"> <input>attitude/phi-rad</input>
+      <kp> ap/roll-pid-kp </kp> <ki> ap/roll-pid-ki </ki> <kd> ap/roll-pid-kd </kd>
+      <trigger> fcs/wing-leveler-ap-on-off </trigger> </pid>
+    <switch name="fcs/roll-ap-autoswitch"> <default value="0.0"/>
+      <test value="-fcs/roll-ap-error-pid"> ap/attitude_hold == 1 </test> </switch>
+  </channel>
+  <channel name="Roll heading hold">
+    <pid name="fcs/heading-pi-controller"> <input> ap/heading-error </input>
+      <kp> 6.0 </kp> <ki> 0.13 </ki> </pid>
+    <switch name="fcs/roll-command-selector"> <default value="0.0"/>
+      <test value="fcs/heading-pi-controller">
+        ap/heading_hold == 1
+        gear/unit[2]/WOW == 0
+      </test>
+      <test value="fcs/roll-ap-autoswitch">
+        ap/attitude_hold == 1
+        gear/unit[2]/WOW == 0
+      </test>
+      <output>ap/aileron_cmd</output>
+    </switch>
+  </channel>
+  <channel name="Pitch altitude hold">
+    <pure_gain name="fcs/elevator"> <input> ap/altitude-error </input> <gain> -1.0 </gain>
+      <output> ap/elevator_cmd </output> </pure_gain>
+  </channel>
+</autopilot>
+"""
+
+
 class FlightControlSystemTest(unittest.TestCase):
     def test_yaw_damper_chain_becomes_the_pack_yaw_damper(self):
         sections, notes, _ = convert(AIRCRAFT.replace(PLAIN_RUDDER, YAW_DAMPER_RUDDER))
@@ -511,6 +573,101 @@ class FlightControlSystemTest(unittest.TestCase):
         sections, _, _ = convert()
         self.assertNotIn("yaw_damper", plain(sections)["flight_controls"])
         self.assertNotIn("pitch_trim", plain(sections)["flight_controls"])
+
+    def wing_leveller(self, autopilot=AUTOPILOT, aircraft=ROLL_AIRCRAFT):
+        sections, notes, _ = convert(aircraft, files={"testap.xml": autopilot})
+        return plain(sections)["flight_controls"].get("wing_leveller"), notes
+
+    def test_wing_leveller_chain_becomes_the_pack_wing_leveller(self):
+        wl, notes = self.wing_leveller()
+        # JSBSim's switch passes -PID: the aileron gets -(Kp phi + Ki integral + Kd dphi/dt),
+        # the pack's formula, with the gains the properties start at.
+        self.assertEqual(wl, {"bank_gain_per_rad": 50.0, "bank_integral_gain_per_rad_s": 5.0,
+                              "bank_rate_gain_per_radps": 17.0, "airborne_only": True,
+                              "engaged_at_start": False})
+        translated = [n for n in notes if "translated as flight_controls.wing_leveller" in n]
+        self.assertEqual(len(translated), 1, notes)
+        self.assertIn("fedsim's for JSBSim's ap/attitude_hold", translated[0])
+        self.assertIn("not translated: channels 'Roll heading hold' (all but "
+                      "'fcs/roll-command-selector', on the wing leveller's path), "
+                      "'Pitch altitude hold'", translated[0])
+        self.assertTrue(any("sensor 'fcs/attitude/sensor/phi-rad' (lag, bias) is not on the wing "
+                            "leveller's path" in n for n in notes), notes)
+        self.assertTrue(any("no anti-windup" in n and "backward difference" in n for n in notes))
+        # The autopilot's output is carried now; the pack gains no other note on the aileron.
+        self.assertFalse(any("input ap/aileron_cmd" in n for n in notes), notes)
+        self.assertFalse(any("<autopilot> 'testap' is not translated" in n for n in notes))
+        self.assertFalse(any("negated" in n for n in notes))
+
+    def test_written_pack_names_the_autopilot_file_and_the_jsbsim_figures(self):
+        with tempfile.TemporaryDirectory() as d:
+            for name, text in (("testplane.xml", ROLL_AIRCRAFT), ("testap.xml", AUTOPILOT)):
+                with open(os.path.join(d, name), "w") as f:
+                    f.write(text)
+            out = os.path.join(d, "testplane.yaml")
+            with contextlib.redirect_stderr(io.StringIO()):
+                self.assertEqual(jsbsim2fedsim.main([os.path.join(d, "testplane.xml"), "-o", out,
+                                                     "--engine-dir", d]), 0)
+            with open(out) as f:
+                text = f.read()
+        self.assertIn("# from JSBSim testplane.xml, testap.xml", text)
+        self.assertIn("""  wing_leveller:
+    bank_gain_per_rad: 50.0  # JSBSim ap/roll-pid-kp (testap.xml 'fcs/roll-ap-error-pid')
+    bank_integral_gain_per_rad_s: 5.0  # JSBSim ap/roll-pid-ki
+    bank_rate_gain_per_radps: 17.0  # JSBSim ap/roll-pid-kd
+    airborne_only: true  # 'fcs/roll-command-selector' tests gear/unit[2]/WOW == 0
+    engaged_at_start: false  # JSBSim ap/attitude_hold starts at 0
+""", text)
+
+    def test_a_switch_passing_plus_pid_gives_negated_gains(self):
+        wl, notes = self.wing_leveller(AUTOPILOT.replace('value="-fcs/roll-ap-error-pid"',
+                                                         'value="fcs/roll-ap-error-pid"'))
+        self.assertEqual((wl["bank_gain_per_rad"], wl["bank_integral_gain_per_rad_s"],
+                          wl["bank_rate_gain_per_radps"]), (-50.0, -5.0, -17.0))
+        self.assertTrue(any("passes +'fcs/roll-ap-error-pid'" in n and "negated" in n
+                            for n in notes), notes)
+
+    def test_inline_autopilot_with_numeric_gains_and_no_gear_test(self):
+        ap = AUTOPILOT.replace('<?xml version="1.0"?>\n', "").replace("<kd> ap/roll-pid-kd </kd>", "<kd> 2.5 </kd>").replace(
+            "<ki> ap/roll-pid-ki </ki>", "").replace(
+            "        ap/attitude_hold == 1\n        gear/unit[2]/WOW == 0", "        ap/attitude_hold == 1")
+        wl, notes = self.wing_leveller(aircraft=ROLL_AIRCRAFT.replace('<autopilot file="testap"/>', ap))
+        self.assertEqual((wl["bank_gain_per_rad"], wl["bank_integral_gain_per_rad_s"],
+                          wl["bank_rate_gain_per_radps"], wl["airborne_only"]), (50.0, 0.0, 2.5, False))
+        self.assertTrue(any(n.startswith("JSBSim <autopilot> 'Test Autopilot': its wing leveller")
+                            for n in notes), notes)
+        # No integral gain: JSBSim's integration rule does not matter; no ground test: no
+        # integral on the ground to tell apart.
+        self.assertFalse(any("Adams-Bashforth" in n or "on the ground" in n for n in notes), notes)
+
+    def assert_no_wing_leveller(self, autopilot, why):
+        wl, notes = self.wing_leveller(autopilot)
+        self.assertIsNone(wl)
+        self.assertTrue(any(n.startswith("JSBSim <autopilot> 'testap' is not translated: no wing "
+                                         "leveller (") and why in n for n in notes), notes)
+        # Nothing carries the autopilot's output: the FCS input stays listed.
+        self.assertTrue(any("input ap/aileron_cmd" in n and "not translated" in n for n in notes))
+
+    def test_a_gain_property_without_default_gives_no_wing_leveller(self):
+        self.assert_no_wing_leveller(
+            AUTOPILOT.replace('<property value="17.0"> ap/roll-pid-kd </property>', ""),
+            "its kd is property ap/roll-pid-kd, which has no <property value=...> default")
+
+    def test_a_pid_on_another_input_gives_no_wing_leveller(self):
+        self.assert_no_wing_leveller(
+            AUTOPILOT.replace("<input>attitude/phi-rad</input>", "<input>attitude/theta-rad</input>"),
+            "no <pid> reads attitude/phi-rad")
+
+    def test_a_chain_that_misses_the_aileron_gives_no_wing_leveller(self):
+        self.assert_no_wing_leveller(
+            AUTOPILOT.replace("<output>ap/aileron_cmd</output>", "<output>ap/other_cmd</output>"),
+            "'fcs/roll-command-selector' reaches no input of the FCS's aileron chain")
+
+    def test_no_autopilot_no_wing_leveller(self):
+        wl, notes = self.wing_leveller(aircraft=ROLL_AIRCRAFT.replace('  <autopilot file="testap"/>\n', ""))
+        self.assertIsNone(wl)
+        self.assertFalse(any("autopilot" in n or "wing_leveller" in n for n in notes), notes)
+        self.assertNotIn("wing_leveller", plain(convert()[0])["flight_controls"])
 
     def test_pitch_trim_option(self):
         sections, _, _ = convert(pitch_trim=("tab", 0.4))

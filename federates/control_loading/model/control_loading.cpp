@@ -111,6 +111,12 @@ void ControlLoading::cut_off(const std::string& reason) {
   outputs_.status = LoaderStatus::kSafe;
   force_gain_ = 0.0;
   shaker_.reset();
+  // The motors are off from now: what the outputs say until the next step.
+  outputs_.stick_shaker = false;
+  for (AxisOutputs& a : outputs_.axes) {
+    a.max_loader_force_n = 0.0;
+    a.max_backdrive_force_n = 0.0;
+  }
 }
 
 namespace {

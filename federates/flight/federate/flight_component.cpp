@@ -56,7 +56,21 @@ void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
   const msg::PilotControls* pilot = pilot_controls_.latest();
   if (pilot && pilot_controls_.updates() != controls_seen_) {
     controls_seen_ = pilot_controls_.updates();
-    if (const auto problem = check_pilot_controls(*pilot)) {
+    const bool invalid = (pilot->discretes() & msg::DISCRETE_INPUTS_INVALID) != 0;
+    if (invalid != pilot_inputs_invalid_) {
+      pilot_inputs_invalid_ = invalid;
+      if (invalid) {
+        report_fault("pilot_inputs_invalid", "frame " + std::to_string(frame.frame) +
+                                                 ": the I/O federate has lost its input device (pilot_controls of frame " +
+                                                 std::to_string(pilot->stamp().frame()) +
+                                                 " marked invalid): holding the last valid controls");
+      } else {
+        log().info("frame {}: pilot inputs valid again: taking them", frame.frame);
+      }
+    }
+    if (invalid) {
+      // Held: the last valid controls stay (below).
+    } else if (const auto problem = check_pilot_controls(*pilot)) {
       report_fault("input_rejected", "frame " + std::to_string(frame.frame) +
                                          ": pilot_controls of frame " +
                                          std::to_string(pilot->stamp().frame()) + " " +
@@ -70,7 +84,17 @@ void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
   if (have_valid_controls_) {
     setup_.model->set_controls(
         controls_from_message(last_valid_controls_, setup_.controls_mode, trim_base_));
+    apply_wing_leveller_switch(frame);
   }
+}
+
+void FlightComponent::apply_wing_leveller_switch(const runtime::FrameContext& frame) {
+  AircraftModel& model = *setup_.model;
+  if (!model.pack().flight_controls.wing_leveller) return;
+  const bool on = (last_valid_controls_.discretes() & msg::DISCRETE_WING_LEVELLER) != 0;
+  if (on == model.wing_leveller_engaged()) return;
+  model.set_wing_leveller_engaged(on);
+  log().info("frame {}: wing leveller {}", frame.frame, on ? "engaged" : "disengaged");
 }
 
 void FlightComponent::take_mcp(const runtime::FrameContext& frame) {
@@ -78,6 +102,7 @@ void FlightComponent::take_mcp(const runtime::FrameContext& frame) {
   if (sample == nullptr || pilot_controls_.updates() == mcp_seen_) return;
   mcp_seen_ = pilot_controls_.updates();
   const msg::PilotControls& pilot = *sample;
+  if ((pilot.discretes() & msg::DISCRETE_INPUTS_INVALID) != 0) return;  // not the pilot's panel
   if (const auto problem = check_mcp(pilot.mcp())) {
     report_fault("input_rejected", "frame " + std::to_string(frame.frame) + ": pilot_controls of frame " +
                                        std::to_string(pilot.stamp().frame()) + " " + *problem +

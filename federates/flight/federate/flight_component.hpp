@@ -52,6 +52,8 @@ class FlightComponent final : public runtime::Component {
 
  private:
   void apply_pilot_controls(const runtime::FrameContext& frame);
+  /// The pilot's wing-leveller switch (discrete bit) to the pack's wing leveller, logged on change.
+  void apply_wing_leveller_switch(const runtime::FrameContext& frame);
   void take_mcp(const runtime::FrameContext& frame);
   void fly_autopilot(const runtime::FrameContext& frame);
   afcs::AfcsIlsSignals nav1_ils() const;
@@ -77,6 +79,7 @@ class FlightComponent final : public runtime::Component {
   std::uint64_t controls_seen_ = 0;       // pilot_controls_.updates() last checked
   msg::PilotControls last_valid_controls_;
   bool have_valid_controls_ = false;
+  bool pilot_inputs_invalid_ = false;     // the I/O federate marks its samples invalid (device lost)
   std::uint64_t dropped_steps_seen_ = 0;
   msg::AircraftState state_;
   msg::EngineState engine_;

@@ -22,6 +22,9 @@ enum class Channel {
   kFlaps, kSpeedbrake, kGearDown,                     // 0..1 (gear: 0 up, 1 down)
   kBrakeLeft, kBrakeRight,                            // 0..1
   kNosewheelSteering,                                 // -1..1
+  kWingLeveller,                                      // switch: on while >= 0.5
+  // Force sensors on the primaries, for a control loader in the loop (+ push, + right) [N]
+  kColumnForceN, kWheelForceN, kPedalForceN,          // -1500..1500 N
   // Radio tuning (the edges' units, as a pilot dials them; 0 = not tuned). A profile should
   // change them in steps (a repeated time), not ramps, or the radio tunes through the band.
   kNav1Mhz, kNav2Mhz,                                 // 0..117.95 MHz

@@ -1,10 +1,13 @@
-// Where pilot inputs come from. The scripted profile is one source; joystick (SDL2/evdev) and
-// A/D-converter emulation slot in as further implementations.
+// Where pilot inputs come from: a scripted profile (input_profile.hpp), an evdev device
+// (joystick, yoke, pedals: io/devices/device_source.hpp), and the A/D emulation
+// (adc_emulation.hpp), which wraps another source.
 #pragma once
 
 #include "io/model/control_inputs.hpp"
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace fedsim::io {
 
@@ -16,6 +19,34 @@ class InputSource {
   virtual void sample(double sim_time_s, ControlInputs& controls) = 0;
   /// One line for logs, e.g. "profile doublets.csv (3 channels, 0-30 s)".
   virtual std::string describe() const = 0;
+  /// False while the source has lost its device (unplugged, a read error): the controls it
+  /// leaves are not the pilot's. The I/O federate then sets DISCRETE_INPUTS_INVALID and the
+  /// flight federate holds the last valid controls.
+  virtual bool valid() const { return true; }
+};
+
+/// Sources sampled in order, each over the channels the ones before it wrote (a profile for
+/// the panel, a joystick over it for the primary controls). Valid while every layer is.
+class LayeredSource final : public InputSource {
+ public:
+  explicit LayeredSource(std::vector<std::unique_ptr<InputSource>> layers) : layers_(std::move(layers)) {}
+  void sample(double sim_time_s, ControlInputs& controls) override {
+    for (auto& layer : layers_) layer->sample(sim_time_s, controls);
+  }
+  std::string describe() const override {
+    std::string s;
+    for (const auto& layer : layers_) s += (s.empty() ? "" : ", then ") + layer->describe();
+    return s;
+  }
+  bool valid() const override {
+    for (const auto& layer : layers_) {
+      if (!layer->valid()) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<std::unique_ptr<InputSource>> layers_;
 };
 
 }  // namespace fedsim::io

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -42,7 +44,7 @@ TEST(Graph, ShippedDeploymentsHaveNoProblems) {
   EXPECT_GE(checked, 2);
 }
 
-TEST(Graph, DefaultScenarioWiresIoToFlightToNavAndRecorder) {
+TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderAndRecorder) {
   const std::string path = std::string(FEDSIM_SOURCE_DIR) + "/deploy/default.yaml";
   const DataFlowGraph graph =
       build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
@@ -51,10 +53,15 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavAndRecorder) {
             std::string::npos)
       << dot;
   EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
-  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, recorder"),
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, recorder"),
             std::string::npos)
       << graph_text(graph);
   EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> recorder"), std::string::npos);
+  // The loader's autopilot input is a monitor: without an autopilot it is a note, not a problem.
+  EXPECT_TRUE(graph.problems.empty());
+  EXPECT_NE(std::find(graph.notes.begin(), graph.notes.end(),
+                      "control_loading monitors fedsim/autopilot_state: no federate writes it here"),
+            graph.notes.end());
   // docs/architecture.md shows this graph: its DOT is the code's (redraw: target docs_images).
   std::ifstream committed(std::string(FEDSIM_SOURCE_DIR) + "/docs/images/federation_default.dot");
   const std::string committed_dot((std::istreambuf_iterator<char>(committed)),

@@ -171,6 +171,15 @@ void AircraftModel::build_systems() {
     s.yaw_damper.emplace(damper);
     s.yaw_damper_engaged = fc.yaw_damper->engaged_at_start;
   }
+  if (fc.wing_leveller) {
+    WingLeveller::Params leveller;
+    leveller.bank_gain_per_rad = fc.wing_leveller->bank_gain_per_rad;
+    leveller.bank_integral_gain_per_rad_s = fc.wing_leveller->bank_integral_gain_per_rad_s;
+    leveller.bank_rate_gain_per_radps = fc.wing_leveller->bank_rate_gain_per_radps;
+    leveller.airborne_only = fc.wing_leveller->airborne_only;
+    s.wing_leveller.emplace(leveller);
+    s.wing_leveller_engaged = fc.wing_leveller->engaged_at_start;
+  }
   s.retractable_gear = any_retractable(pack_.landing_gear);
   if (s.retractable_gear) {
     Actuator::Params gear;
@@ -237,6 +246,7 @@ void AircraftModel::reset(const AircraftInitialConditions& initial) {
   if (turbulence_) turbulence_->reset();
   const FlightControlsSpec& fc = pack_.flight_controls;
   surfaces_->yaw_damper_engaged = fc.yaw_damper && fc.yaw_damper->engaged_at_start;
+  surfaces_->wing_leveller_engaged = fc.wing_leveller && fc.wing_leveller->engaged_at_start;
   place_surfaces();
   set_state(initial);
   if (initial.settle_engines) settle_systems();
@@ -390,6 +400,12 @@ void AircraftModel::place_surfaces() {
     const Evaluation& e = *current_;
     s.yaw_damper->reset(yaw_rate_for_damper(e), e.mach, s.yaw_damper_engaged);
   }
+  if (s.wing_leveller) {
+    // At rest on the present attitude: the proportional and rate terms act at once (as
+    // JSBSim's on engagement), the integral starts from zero.
+    s.wing_leveller->reset();
+    s.wing_leveller->step(0.0, wing_leveller_inputs(*current_));
+  }
   for (Surface surface : Surfaces::kAll) {
     place_actuator(s[surface], s.command(surface, controls_));
   }
@@ -404,6 +420,26 @@ void AircraftModel::set_yaw_damper_engaged(bool engaged) {
   Surfaces& s = *surfaces_;
   if (!s.yaw_damper || s.yaw_damper_engaged == engaged) return;
   s.yaw_damper_engaged = engaged;
+}
+
+void AircraftModel::set_wing_leveller_engaged(bool engaged) {
+  if (surfaces_->wing_leveller) surfaces_->wing_leveller_engaged = engaged;
+}
+
+bool AircraftModel::wing_leveller_engaged() const {
+  return surfaces_->wing_leveller && surfaces_->wing_leveller_engaged;
+}
+
+WingLeveller::Inputs AircraftModel::wing_leveller_inputs(const Evaluation& e) const {
+  const EulerAngles attitude = euler_from_dcm(e.ned_from_body);
+  const Eigen::Vector3d& w = e.omega_wrt_earth_body;
+  WingLeveller::Inputs in;
+  in.bank_rad = attitude.phi_rad;
+  in.bank_rate_radps = WingLeveller::bank_rate_radps(w.x(), w.y(), w.z(), attitude.phi_rad, attitude.theta_rad);
+  in.pilot_aileron_command = controls_.aileron_command();
+  in.engaged = surfaces_->wing_leveller_engaged;
+  in.weight_on_wheels = gear_->outputs().weight_on_wheels;
+  return in;
 }
 
 bool AircraftModel::yaw_damper_engaged() const { return surfaces_->yaw_damper && surfaces_->yaw_damper_engaged; }
@@ -667,6 +703,7 @@ void AircraftModel::advance_systems(double dt_s) {
         if (s.yaw_damper) {
           s.yaw_damper->step(dt_s, YawDamper::Inputs{yaw_rate_for_damper(e), e.mach, s.yaw_damper_engaged});
         }
+        if (s.wing_leveller) s.wing_leveller->step(dt_s, wing_leveller_inputs(e));
         for (Surface surface : Surfaces::kAll) step_actuator(s[surface], dt_s, s.command(surface, controls_));
         break;
       }

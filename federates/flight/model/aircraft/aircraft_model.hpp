@@ -26,6 +26,7 @@
 #include "flight/model/systems/mass_balance.hpp"
 #include "flight/model/systems/piston_powerplant.hpp"
 #include "flight/model/systems/turbofan.hpp"
+#include "flight/model/systems/wing_leveller.hpp"
 
 namespace fedsim::flight {
 
@@ -134,6 +135,10 @@ class AircraftModel {
   /// again if the pack says engaged_at_start.
   void set_yaw_damper_engaged(bool engaged);
   bool yaw_damper_engaged() const;
+  /// Engages or disengages the pack's wing leveller (the pilot's switch; no effect without
+  /// one). Disengaging resets its integral. A reset sets it to the pack's engaged_at_start.
+  void set_wing_leveller_engaged(bool engaged);
+  bool wing_leveller_engaged() const;
   /// Moves the terrain plane (m above MSL).
   void set_runway_elevation_m(double elevation_m);
   double runway_elevation_m() const { return runway_elevation_m_; }
@@ -174,6 +179,7 @@ class AircraftModel {
   void build_systems();
   void place_surfaces();
   double yaw_rate_for_damper(const Evaluation& e) const;
+  WingLeveller::Inputs wing_leveller_inputs(const Evaluation& e) const;
   /// The force chain (executive steps 1-8) at a state; update_hysteresis for the present
   /// state only (trial states of the integrator hold the stall flag).
   void evaluate(const RigidBodyState& state, Evaluation& eval, bool update_hysteresis);

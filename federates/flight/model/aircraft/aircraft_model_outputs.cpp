@@ -78,6 +78,9 @@ void AircraftModel::fill_outputs() {
   o.pitch_trim_norm = s.trim_position(controls_);
   o.yaw_damper_engaged = s.yaw_damper && s.yaw_damper_engaged;
   o.yaw_damper_rudder = s.yaw_damper ? s.yaw_damper->outputs().rudder_command : 0.0;
+  o.wing_leveller_engaged = s.wing_leveller && s.wing_leveller_engaged;
+  o.wing_leveller_active = s.wing_leveller && s.wing_leveller->outputs().active;
+  o.wing_leveller_aileron = s.wing_leveller ? s.wing_leveller->outputs().aileron_command : 0.0;
 
   o.aero = e.aero;
   o.aero_force_body_n = e.aero_force_body;

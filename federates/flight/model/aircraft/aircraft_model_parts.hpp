@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "flight/model/systems/wing_leveller.hpp"
 #include "flight/model/systems/yaw_damper.hpp"
 
 namespace fedsim::flight {
@@ -36,12 +37,15 @@ struct AircraftModel::Surfaces {
   /// The command an actuator follows (the gear: 0 up .. 1 down, at the pack's transit rate).
   /// The elevator takes the pilot's elevator plus the pitch trim's present position (with a
   /// pitch-trim system; else the trim command itself), the rudder the pilot's rudder, its trim
-  /// and the yaw damper's command, each sum clipped to -1..1 (JSBSim's "Pitch Trim Sum" and
-  /// "Rudder Sum").
+  /// and the yaw damper's command, the aileron the pilot's aileron, its trim and the wing
+  /// leveller's command, each sum clipped to -1..1 (JSBSim's "Pitch Trim Sum", "Rudder Sum"
+  /// and "fcs/roll-trim-sum").
   double command(Surface surface, const AircraftControls& c) const {
     switch (surface) {
       case Surface::kElevator: return std::clamp(c.elevator + trim_position(c), -1.0, 1.0);
-      case Surface::kAileron: return c.aileron_command();
+      case Surface::kAileron:
+        return std::clamp(c.aileron_command() + (wing_leveller ? wing_leveller->outputs().aileron_command : 0.0),
+                          -1.0, 1.0);
       case Surface::kRudder:
         return std::clamp(c.rudder + c.rudder_trim + (yaw_damper ? yaw_damper->outputs().rudder_command : 0.0),
                           -1.0, 1.0);
@@ -69,6 +73,8 @@ struct AircraftModel::Surfaces {
   std::optional<Actuator> pitch_trim;  // normalised position, moving at the trim rate
   std::optional<YawDamper> yaw_damper;
   bool yaw_damper_engaged = false;
+  std::optional<WingLeveller> wing_leveller;
+  bool wing_leveller_engaged = false;
   bool retractable_gear = false;
   double flap_position_at_full = 1.0;  // actuator position at flap command 1 (rad or 1)
   double flap_full_travel_rad = 0.0;

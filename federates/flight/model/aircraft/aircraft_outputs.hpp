@@ -111,6 +111,9 @@ struct AircraftOutputs {
   double pitch_trim_norm = 0.0;
   bool yaw_damper_engaged = false;
   double yaw_damper_rudder = 0.0;  ///< the yaw damper's rudder command (normalised, + nose right)
+  bool wing_leveller_engaged = false;  ///< the pilot's switch (the pack has a wing leveller)
+  bool wing_leveller_active = false;   ///< engaged and acting (airborne, if the pack says so)
+  double wing_leveller_aileron = 0.0;  ///< its aileron command (normalised, + right wing down)
 
   // Forces and moments (body axes; moments about the CG; gravity excluded).
   Aerodynamics::Outputs aero;  ///< coefficients; its moment_body is about the aero RP

@@ -46,6 +46,18 @@ struct YawDamperSpec {
   bool engaged_at_start = true;
 };
 
+/// The wing leveller (model/systems/wing_leveller.hpp, the JSBSim C172 autopilot's "Roll wing
+/// leveler"): aileron command = -(Kp phi + Ki integral(phi) + Kd dphi/dt), added to the pilot's
+/// aileron and trim. Off at the start of a run unless engaged_at_start (the pilot's switch,
+/// AircraftModel::set_wing_leveller_engaged, turns it on).
+struct WingLevellerSpec {
+  double bank_gain_per_rad = 0.0;
+  double bank_integral_gain_per_rad_s = 0.0;
+  double bank_rate_gain_per_radps = 0.0;
+  bool airborne_only = true;
+  bool engaged_at_start = false;
+};
+
 /// Pitch trim with a trim rate: AircraftControls::elevator_trim is the position the trim is
 /// driven to; the trim moves there at rate_per_s (normalised trim travel, -1..1, per second).
 /// Its position adds to the elevator command before the elevator's clip (JSBSim's
@@ -67,6 +79,7 @@ struct FlightControlsSpec {
   std::optional<KinematicSurfaceSpec> spoilers;
   std::optional<YawDamperSpec> yaw_damper;    // absent: no yaw damper
   std::optional<PitchTrimSpec> pitch_trim;    // absent: the trim follows its command at once
+  std::optional<WingLevellerSpec> wing_leveller;  // absent: no wing leveller
 };
 
 }  // namespace fedsim::flight

@@ -284,11 +284,24 @@ PitchTrimSpec read_pitch_trim(const ConfigNode& node) {
   return t;
 }
 
+WingLevellerSpec read_wing_leveller(const ConfigNode& node) {
+  node.reject_unknown_keys({"bank_gain_per_rad", "bank_integral_gain_per_rad_s",
+                            "bank_rate_gain_per_radps", "airborne_only", "engaged_at_start"});
+  WingLevellerSpec w;
+  // |K| <= 1000: far beyond any aileron gain an aircraft flies (the C172's is 50 per rad).
+  w.bank_gain_per_rad = node.number("bank_gain_per_rad", -1000.0, 1000.0);
+  w.bank_integral_gain_per_rad_s = node.number_or("bank_integral_gain_per_rad_s", 0.0, -1000.0, 1000.0);
+  w.bank_rate_gain_per_radps = node.number_or("bank_rate_gain_per_radps", 0.0, -1000.0, 1000.0);
+  w.airborne_only = node.boolean_or("airborne_only", true);
+  w.engaged_at_start = node.boolean_or("engaged_at_start", false);
+  return w;
+}
+
 }  // namespace
 
 FlightControlsSpec read_flight_controls(const ConfigNode& section) {
   section.reject_unknown_keys({"elevator", "aileron", "rudder", "flaps", "speedbrake",
-                               "spoilers", "yaw_damper", "pitch_trim"});
+                               "spoilers", "yaw_damper", "pitch_trim", "wing_leveller"});
   FlightControlsSpec out;
   out.elevator = surface_if(section, "elevator");
   out.aileron = surface_if(section, "aileron");
@@ -303,6 +316,10 @@ FlightControlsSpec read_flight_controls(const ConfigNode& section) {
   if (section.has("pitch_trim")) {
     if (!out.elevator) section.fail_at("pitch_trim", "a pitch trim needs an elevator");
     out.pitch_trim = read_pitch_trim(section.child("pitch_trim"));
+  }
+  if (section.has("wing_leveller")) {
+    if (!out.aileron) section.fail_at("wing_leveller", "a wing leveller needs an aileron");
+    out.wing_leveller = read_wing_leveller(section.child("wing_leveller"));
   }
   return out;
 }

@@ -48,6 +48,20 @@ TEST(FlightControlSystemPack, TheC172HasATrimTabAndNoYawDamper) {
   EXPECT_EQ(p.flight_controls.pitch_trim->kind, PitchTrimKind::kTab);
 }
 
+TEST(FlightControlSystemPack, TheC172HasItsJsbsimWingLeveller) {
+  const AircraftPack p = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml");
+  ASSERT_TRUE(p.flight_controls.wing_leveller);
+  const WingLevellerSpec& w = *p.flight_controls.wing_leveller;
+  // c172ap.xml: ap/roll-pid-kp 50, -ki 5, -kd 17; the output switch passes -PID.
+  EXPECT_DOUBLE_EQ(w.bank_gain_per_rad, 50.0);
+  EXPECT_DOUBLE_EQ(w.bank_integral_gain_per_rad_s, 5.0);
+  EXPECT_DOUBLE_EQ(w.bank_rate_gain_per_radps, 17.0);
+  EXPECT_TRUE(w.airborne_only);       // the selector tests gear WOW == 0
+  EXPECT_FALSE(w.engaged_at_start);   // the pilot's switch engages it
+  EXPECT_FALSE(load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml")
+                   .flight_controls.wing_leveller);
+}
+
 void expect_error(const std::string& text, const std::string& field, const std::string& words) {
   try {
     parse_aircraft_pack(text, "b737-variant.yaml");
@@ -70,6 +84,18 @@ TEST(FlightControlSystemPack, BadSectionsFailAtTheirField) {
                "flight_controls.yaw_damper.gain_per_radps", "mach");
   expect_error(replaced(b737, "engaged_at_start: true", "engaged_at_start: true\n    authority: 0"),
                "flight_controls.yaw_damper", "positive");
+  const std::string leveller =
+      "  wing_leveller:\n    bank_gain_per_rad: 50\n    bank_rate_gain_per_radps: 17\n";
+  const std::string with_leveller = replaced(b737, "  pitch_trim:\n", leveller + "  pitch_trim:\n");
+  EXPECT_TRUE(parse_aircraft_pack(with_leveller, "b737-variant.yaml").flight_controls.wing_leveller);
+  expect_error(replaced(with_leveller, "bank_gain_per_rad: 50", "bank_gain_per_rad: .nan"),
+               "flight_controls.wing_leveller.bank_gain_per_rad", "");
+  expect_error(replaced(with_leveller, "bank_rate_gain_per_radps: 17", "bank_rate_gain_per_radps: 1e6"),
+               "flight_controls.wing_leveller.bank_rate_gain_per_radps", "");
+  expect_error(replaced(with_leveller, "bank_gain_per_rad: 50\n", ""),
+               "flight_controls.wing_leveller", "bank_gain_per_rad");
+  expect_error(replaced(with_leveller, "bank_gain_per_rad: 50", "bank_gain_per_rad: 50\n    roll_gain: 2"),
+               "flight_controls.wing_leveller", "roll_gain");
   // Negative control: the unmodified text loads.
   EXPECT_NO_THROW(parse_aircraft_pack(b737, "b737.yaml"));
 }
