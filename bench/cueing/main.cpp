@@ -117,9 +117,9 @@ int main(int argc, char** argv) {
   const double inner_hz = loader.substeps / dt;
   const double inner_wall_hz = loader.substeps / (loader.frame_us * 1e-6);
   std::printf("flight model (C172, RK4)  %8.2f us/frame  (baseline)\n", flight_us);
-  std::printf("motion platform           %8.2f us/frame  %.2f x the flight step, %.1f %% of the frame\n", motion_us,
+  std::printf("motion platform           %8.2f us/frame  %.2f x the flight step, %.2f %% of the frame\n", motion_us,
               motion_us / flight_us, motion_us / (dt * 1e6) * 100.0);
-  std::printf("control loading           %8.2f us/frame  %.2f x the flight step, %.1f %% of the frame; "
+  std::printf("control loading           %8.2f us/frame  %.2f x the flight step, %.2f %% of the frame; "
               "%d sub-steps of %.3f ms: inner loop %.0f Hz simulated, %.0f Hz of wall time (%.0f x real time)\n",
               loader.frame_us, loader.frame_us / flight_us, loader.frame_us / (dt * 1e6) * 100.0, loader.substeps,
               loader.substep_s * 1e3, inner_hz, inner_wall_hz, inner_wall_hz / inner_hz);
