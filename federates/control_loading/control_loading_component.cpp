@@ -1,9 +1,12 @@
 #include "control_loading/control_loading_component.hpp"
+#include "flight/federate/start_options.hpp"
+#include "flight/model/aircraft/stall_warning.hpp"
 
 #include <cstdio>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fedsim::control_loading {
 namespace {
@@ -27,6 +30,27 @@ void fill_axis(const AxisOutputs& a, msg::ControlAxis& m) {
 bool finite(double v) { return std::isfinite(v); }
 
 }  // namespace
+
+double scheduled_shaker_alpha_rad(const ControlLoadingSetup& setup, double flap_norm) {
+  const auto& x = setup.shaker_flap_norm;
+  const auto& y = setup.shaker_alpha_rad;
+  if (x.empty() || x.size() != y.size()) return std::numeric_limits<double>::quiet_NaN();
+  const double f = std::isfinite(flap_norm) ? std::clamp(flap_norm, x.front(), x.back()) : x.front();
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (f <= x[i]) return y[i - 1] + (y[i] - y[i - 1]) * (f - x[i - 1]) / (x[i] - x[i - 1]);
+  }
+  return y.back();
+}
+
+void schedule_shaker_from_pack(const std::string& pack_path, ControlLoadingSetup& setup) {
+  const flight::AircraftPack pack = flight::load_aircraft_pack(pack_path);
+  setup.shaker_flap_norm.clear();
+  setup.shaker_alpha_rad.clear();
+  for (double flaps : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    setup.shaker_flap_norm.push_back(flaps);
+    setup.shaker_alpha_rad.push_back(flight::stall_angles(pack, flaps).alpha_warning_rad);
+  }
+}
 
 std::optional<std::string> inputs_from_messages(const msg::AircraftState& aircraft, double now_s,
                                                 const msg::PilotControls* pilot,
@@ -102,7 +126,19 @@ ControlLoadingComponent::ControlLoadingComponent(std::string name, ControlLoadin
       control_loading_state_(writes(runtime::topics::control_loading_state, setup.state_qos)),
       setup_(std::move(setup)),
       loader_(setup_.parameters),
-      engage_wanted_(setup_.engage_on_start) {}
+      engage_wanted_(setup_.engage_on_start) {
+  if (setup_.shaker_flap_norm.empty()) {
+    log().info("stick shaker at {:.3f} rad (no --aircraft: the loader's fixed angle)", setup_.parameters.shaker_alpha_rad);
+    return;
+  }
+  std::string schedule;
+  for (std::size_t i = 0; i < setup_.shaker_flap_norm.size(); ++i) {
+    char item[48];
+    std::snprintf(item, sizeof item, "%s%.2f: %.3f", i ? ", " : "", setup_.shaker_flap_norm[i], setup_.shaker_alpha_rad[i]);
+    schedule += item;
+  }
+  log().info("stick shaker from the pack's stall-warning angles (flaps: alpha rad) {}", schedule);
+}
 
 void ControlLoadingComponent::on_command(const msg::SimCommand& command) {
   if (command.kind() != msg::COMMAND_FAILURE || command.target().to_string() != "control_loading") return;
@@ -142,6 +178,7 @@ void ControlLoadingComponent::take_inputs(const runtime::FrameContext& frame) {
     loader_.cut_off(*problem);
     return;
   }
+  inputs_.shaker_alpha_rad = scheduled_shaker_alpha_rad(setup_, aircraft->flap_norm());
   have_inputs_ = true;
 }
 
@@ -188,6 +225,7 @@ void ControlLoadingComponent::step(const runtime::FrameContext& frame) {
 runtime::FederateProgram program() {
   struct Options {
     std::string engage = "on";
+    std::string aircraft;
     std::string state_qos;
   };
   auto o = std::make_shared<Options>();
@@ -199,6 +237,9 @@ runtime::FederateProgram program() {
     app.add_option("--engage", o->engage, "fade the forces in once the aircraft state arrives")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    app.add_option("--aircraft", o->aircraft,
+                   "aircraft pack (file or name in data/aircraft): the stick shaker at its stall-warning angle "
+                   "(1.05 V_s) for the flap setting; default: a fixed 0.24 rad");
     app.add_option("--state-qos", o->state_qos,
                    "QoS profile of fedsim/control_loading_state (default: the catalogue's; lockstep_data to record every frame)");
   };
@@ -206,6 +247,7 @@ runtime::FederateProgram program() {
     ControlLoadingSetup setup;
     setup.engage_on_start = o->engage == "on";
     setup.state_qos = o->state_qos;
+    if (!o->aircraft.empty()) schedule_shaker_from_pack(flight::resolve_pack_path(o->aircraft), setup);
     return std::unique_ptr<runtime::Component>(
         std::make_unique<ControlLoadingComponent>(common.name, std::move(setup)));
   };

@@ -31,14 +31,26 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fedsim::control_loading {
 
 struct ControlLoadingSetup {
   ControlLoadingParameters parameters;
+  // The stick shaker's angle against the flap position (--aircraft: the pack's stall-warning
+  // angles, flight/model/aircraft/stall_warning.hpp), interpolated linearly; empty: the
+  // parameters' fixed shaker_alpha_rad.
+  std::vector<double> shaker_flap_norm;
+  std::vector<double> shaker_alpha_rad;
   bool engage_on_start = true;
   std::string state_qos;  // profile of fedsim/control_loading_state ("" = the catalogue's)
 };
+
+/// The shaker angle of the schedule at flap position `flap_norm` (clamped to its ends); NaN for
+/// an empty schedule.
+double scheduled_shaker_alpha_rad(const ControlLoadingSetup& setup, double flap_norm);
+/// The schedule of a pack (--aircraft): its stall-warning angle (1.05 V_s) at flaps 0, 0.25 ... 1.
+void schedule_shaker_from_pack(const std::string& pack_path, ControlLoadingSetup& setup);
 
 /// The loader's inputs from the latest samples; the reason one cannot be used, or nullopt.
 /// `autopilot` may be null (no autopilot in the federation).
@@ -92,7 +104,8 @@ class ControlLoadingComponent final : public runtime::Component {
   msg::ControlLoadingState sample_;
 };
 
-/// fedsim-control-loading as a program: --engage on|off, --state-qos.
+/// fedsim-control-loading as a program: --engage on|off, --aircraft (the shaker from the pack),
+/// --state-qos.
 runtime::FederateProgram program();
 
 }  // namespace fedsim::control_loading

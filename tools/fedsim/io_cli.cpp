@@ -89,17 +89,37 @@ int list_devices(std::ostream& out) {
 
 }  // namespace
 
+namespace {
+/// The mappings the options ask for; throws std::invalid_argument.
+void parse_options(const CalibrateOptions& o, std::vector<Mapping>& axes, std::vector<Mapping>& buttons) {
+  if (o.out.empty()) throw std::invalid_argument("--out FILE is needed");
+  if (o.axes.empty() && o.buttons.empty()) throw std::invalid_argument("give at least one --axis or --button");
+  if (!(o.dead_zone >= 0.0 && o.dead_zone < 0.5)) throw std::invalid_argument("--dead-zone must lie in [0, 0.5)");
+  for (const auto& a : o.axes) axes.push_back(parse_mapping(a, "reversed"));
+  for (const auto& b : o.buttons) buttons.push_back(parse_mapping(b, "toggle"));
+}
+}  // namespace
+
 int io_calibrate(const CalibrateOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
   if (o.list) return list_devices(out);
-  std::vector<Mapping> axes, buttons;
   std::unique_ptr<io::EventDevice> device;
   try {
-    if (o.out.empty()) throw std::invalid_argument("--out FILE is needed");
-    if (o.axes.empty() && o.buttons.empty()) throw std::invalid_argument("give at least one --axis or --button");
-    if (!(o.dead_zone >= 0.0 && o.dead_zone < 0.5)) throw std::invalid_argument("--dead-zone must lie in [0, 0.5)");
-    for (const auto& a : o.axes) axes.push_back(parse_mapping(a, "reversed"));
-    for (const auto& b : o.buttons) buttons.push_back(parse_mapping(b, "toggle"));
+    std::vector<Mapping> axes, buttons;
+    parse_options(o, axes, buttons);  // before the device: a typo is named without one
     device = open_device(o);
+  } catch (const std::exception& e) {
+    err << "fedsim io calibrate: " << e.what() << "\n";
+    return kExitBadArgument;
+  }
+  return io_calibrate_device(*device, o, in, out, err);
+}
+
+int io_calibrate_device(io::EventDevice& device_ref, const CalibrateOptions& o, std::istream& in,
+                        std::ostream& out, std::ostream& err) {
+  io::EventDevice* device = &device_ref;
+  std::vector<Mapping> axes, buttons;
+  try {
+    parse_options(o, axes, buttons);
   } catch (const std::exception& e) {
     err << "fedsim io calibrate: " << e.what() << "\n";
     return kExitBadArgument;

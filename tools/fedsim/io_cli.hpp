@@ -15,6 +15,10 @@
 #include <string>
 #include <vector>
 
+namespace fedsim::io {
+class EventDevice;
+}
+
 namespace fedsim::launcher {
 
 struct CalibrateOptions {
@@ -29,6 +33,9 @@ struct CalibrateOptions {
 
 /// Runs the calibration reading the user's Enter from `in`; returns the exit status.
 int io_calibrate(const CalibrateOptions& options, std::istream& in, std::ostream& out, std::ostream& err);
+/// The same on a device already open (the tests' scripted one; --device/--device-name ignored).
+int io_calibrate_device(io::EventDevice& device, const CalibrateOptions& options, std::istream& in,
+                        std::ostream& out, std::ostream& err);
 
 /// Registers `fedsim io calibrate`.
 void add_io_commands(CLI::App& app, int& exit_code);

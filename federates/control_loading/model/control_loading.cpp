@@ -211,6 +211,7 @@ const ControlLoadingOutputs& ControlLoading::step(const ControlLoadingInputs& ra
   if (outputs_.status == LoaderStatus::kSafe) {
     shaker_.reset();
   } else {
+    if (!shaker_.set_alpha_on(raw.shaker_alpha_rad)) shaker_.set_alpha_on(parameters_.shaker_alpha_rad);
     shaker_.update(inputs.alpha_rad);
   }
   const int n = substeps_for(dt_s);

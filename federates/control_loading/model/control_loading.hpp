@@ -24,6 +24,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 
 #include "control_loading/model/control_axis.hpp"
@@ -72,6 +73,9 @@ struct ControlLoadingInputs {
   double qbar_pa = 0.0;                       // dynamic pressure (AircraftState.air.qbar_pa) [Pa]
   double alpha_rad = 0.0;                     // angle of attack (AircraftState.air.alpha_rad) [rad]
   double flight_data_age_s = 0.0;             // how old qbar/alpha are (sim time) [s]
+  // The aircraft's stall-warning angle at its present flap setting [rad] (the adapter's, from
+  // the pack); NaN or outside (hysteresis, pi/2): the parameters' shaker_alpha_rad.
+  double shaker_alpha_rad = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct AxisOutputs {

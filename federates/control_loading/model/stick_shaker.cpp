@@ -18,6 +18,14 @@ StickShaker::StickShaker(double alpha_on_rad, double hysteresis_rad)
   }
 }
 
+bool StickShaker::set_alpha_on(double alpha_on_rad) {
+  const double hysteresis = alpha_on_rad_ - alpha_off_rad_;
+  if (!std::isfinite(alpha_on_rad) || !(alpha_on_rad > hysteresis) || !(alpha_on_rad < units::kHalfPi)) return false;
+  alpha_on_rad_ = alpha_on_rad;
+  alpha_off_rad_ = alpha_on_rad - hysteresis;
+  return true;
+}
+
 bool StickShaker::update(double alpha_rad) {
   if (!std::isfinite(alpha_rad)) throw std::invalid_argument("StickShaker: alpha not finite");
   const bool was_active = active_;

@@ -13,6 +13,9 @@ class StickShaker {
   /// (std::invalid_argument otherwise).
   StickShaker(double alpha_on_rad, double hysteresis_rad);
 
+  /// Moves the warning angle (the aircraft's at its present flap setting), keeping the
+  /// hysteresis; false (nothing changes) unless alpha_on_rad lies in (hysteresis, pi/2).
+  bool set_alpha_on(double alpha_on_rad);
   /// The warning state for this angle of attack (finite) [rad].
   bool update(double alpha_rad);
   /// Advances the time since the shaker came on by h seconds (nothing while off).

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace fedsim::control_loading {
 namespace {
@@ -157,6 +158,22 @@ TEST_F(ControlLoadingComponentTest, ANanSampleAndTheInstructorCutItOffByName) {
   EXPECT_EQ(std::string(reader_.latest.cut_off_reason()), "instructor cut-off");
   seconds(1.0);
   EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_SAFE);  // stays cut off until restored
+}
+
+TEST(ShakerSchedule, ThePacksStallWarningAnglesScheduleTheShakerOnTheFlaps) {
+  ControlLoadingSetup setup;
+  EXPECT_TRUE(std::isnan(scheduled_shaker_alpha_rad(setup, 0.5)));  // no --aircraft
+  schedule_shaker_from_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", setup);
+  ASSERT_EQ(setup.shaker_alpha_rad.size(), 5u);
+  for (double a : setup.shaker_alpha_rad) {
+    EXPECT_GT(a, 0.1);
+    EXPECT_LT(a, 0.35);
+  }
+  EXPECT_DOUBLE_EQ(scheduled_shaker_alpha_rad(setup, 0.0), setup.shaker_alpha_rad[0]);
+  EXPECT_DOUBLE_EQ(scheduled_shaker_alpha_rad(setup, 0.125),
+                   0.5 * (setup.shaker_alpha_rad[0] + setup.shaker_alpha_rad[1]));
+  EXPECT_DOUBLE_EQ(scheduled_shaker_alpha_rad(setup, 7.0), setup.shaker_alpha_rad[4]);  // clamped
+  EXPECT_DOUBLE_EQ(scheduled_shaker_alpha_rad(setup, std::nan("")), setup.shaker_alpha_rad[0]);
 }
 
 }  // namespace

@@ -155,6 +155,21 @@ TEST(ControlLoading, StickShakerOnlyAboveItsAngleOfAttack) {
   EXPECT_FALSE(loader.outputs().stick_shaker);
 }
 
+TEST(ControlLoading, TheAircraftsWarningAngleMovesTheShaker) {
+  ControlLoading loader = active_loader();
+  auto at = [&](double alpha, double warning) {
+    ControlLoadingInputs in = cruise(6000.0, alpha);
+    in.shaker_alpha_rad = warning;
+    for (int n = 0; n < 10; ++n) loader.step(in, kFrame);
+    return loader.outputs().stick_shaker;
+  };
+  EXPECT_FALSE(at(0.20, std::nan("")));  // the parameters' 0.24 rad
+  EXPECT_TRUE(at(0.20, 0.18));           // flaps down: a lower warning angle
+  EXPECT_FALSE(at(0.16, 0.18));          // below it less the hysteresis (0.01 rad)
+  EXPECT_FALSE(at(0.20, 2.0));           // beyond pi/2: refused, the parameters' angle
+  EXPECT_TRUE(at(0.25, 2.0));
+}
+
 TEST(ControlLoading, ShakerFrequencyIsFifteenHertz) {
   // Frames of 1 ms (one sub-step each) sample the shaking column finely enough to count it.
   ControlLoading loader = active_loader();
