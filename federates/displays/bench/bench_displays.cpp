@@ -212,9 +212,9 @@ void write_hud_over_ksfo(const fedsim::visual::ChannelConfig& channel, DisplayRe
   Renderer visual(build_airport_scene(ends, options));
   const auto& end28r =
       *std::find_if(ends.begin(), ends.end(), [](const auto& e) { return e.runway == "28R"; });
-  // 2 NM out, wings level, on the path: the FPV falls on the aiming point.
+  // 1 NM out, wings level, on the path: the FPV falls on the aiming point.
   Approach a = approach_at(0, end28r.heading_true_rad);
-  a.distance_m = 2.0 * kNmToM;
+  a.distance_m = 1.0 * kNmToM;
   a.height_m = (a.distance_m + kAimingPointM) * std::tan(kPathRad);
   a.roll_rad = 0.0;
   a.heading_true_rad = end28r.heading_true_rad;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "common/units/units.hpp"
@@ -116,6 +117,7 @@ TEST(Hud, HorizonWhereTheCameraProjectsIt) {
     const double measured = sum / weight;
     const double expected = camera_horizon_row(cam, in.heading_true_rad, col + 0.5);
     EXPECT_NEAR(measured, expected, 1.0) << "column " << col;
+    std::printf("horizon in column %d: row %.2f, the camera %.2f px\n", col, measured, expected);
     EXPECT_GT(std::abs(measured - camera_horizon_row(wrong, in.heading_true_rad, col + 0.5)), 1.0);
   }
 }
@@ -151,6 +153,8 @@ TEST(Hud, FlightPathVectorWhereTheCameraProjectsTheVelocity) {
   const Vec2 measured(all->x(), sum / weight);
   EXPECT_NEAR(measured.x(), expected.x(), 1.0);
   EXPECT_NEAR(measured.y(), expected.y(), 1.0);
+  std::printf("FPV at (%.2f, %.2f), the camera (%.2f, %.2f) px\n", measured.x(), measured.y(),
+              expected.x(), expected.y());
   visual::ChannelConfig pitched = channel;
   pitched.pitch_offset_rad = 1.0 * kDegToRad;
   const Vec2 wrong =

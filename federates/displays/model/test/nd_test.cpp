@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "common/units/units.hpp"
 #include "displays/model/test/test_support.hpp"
@@ -50,6 +51,8 @@ TEST(Nd, HeadingUpLubberAndSelectedHeadingBug) {
     const auto bug = centroid(image, window(expected, 12.0), is_magenta);
     ASSERT_TRUE(bug);
     EXPECT_NEAR(compass_deg(l, *bug), 40.0, 1.5);
+    std::printf("heading %.0f: selected-heading bug at %+.2f deg from the lubber line\n",
+                heading_deg, compass_deg(l, *bug));
     // Negative control: nothing magenta at the mirror image (what a heading-down rose shows).
     const Vec2 mirror = polar(l.rose_centre_px, l.rose_radius_px + 4.0, -40.0 * kDegToRad);
     EXPECT_EQ(count(image, window(mirror, 12.0), is_magenta), 0);
@@ -62,19 +65,22 @@ TEST(Nd, NavaidAtItsRelativeBearingAndRange) {
   in.heading_rad = 50.0 * kDegToRad;
   in.track_rad = in.heading_rad;
   in.range_nm = 40.0;
-  in.navaids = {{"ABC", NavaidKind::kVor, 80.0 * kDegToRad, 20.0 * units::kNmToM},   // +30, R/2
+  in.navaids = {{"ABC", NavaidKind::kVor, 80.0 * kDegToRad, 24.0 * units::kNmToM},   // +30 deg
                 {"FAR", NavaidKind::kVor, 20.0 * kDegToRad, 45.0 * units::kNmToM}};  // beyond
   const Image image = render(in);
   write_png(image, (output_dir() / "nd_navaid.png").string());
-  const Vec2 expected = polar(l.rose_centre_px, 0.5 * l.rose_radius_px, 30.0 * kDegToRad);
+  // 24 NM of 40: 0.6 of the rose's radius (clear of the dashed half-range ring).
+  const Vec2 expected = polar(l.rose_centre_px, 0.6 * l.rose_radius_px, 30.0 * kDegToRad);
   const auto c = centroid(image, window(expected, 7.0), is_cyan);
   ASSERT_TRUE(c);
   EXPECT_NEAR(c->x(), expected.x(), 1.0);
   EXPECT_NEAR(c->y(), expected.y(), 1.0);
   EXPECT_NEAR(compass_deg(l, *c), 30.0, 1.0);
+  std::printf("navaid at +30 deg, 0.6 R: drawn at (%.2f, %.2f), expected (%.2f, %.2f) px\n", c->x(),
+              c->y(), expected.x(), expected.y());
   // Negative controls: nothing at -30 deg; the navaid 45 NM out (range 40) is not drawn, at
   // the rose's edge or anywhere.
-  const Vec2 mirror = polar(l.rose_centre_px, 0.5 * l.rose_radius_px, -30.0 * kDegToRad);
+  const Vec2 mirror = polar(l.rose_centre_px, 0.6 * l.rose_radius_px, -30.0 * kDegToRad);
   EXPECT_EQ(count(image, window(mirror, 7.0), is_cyan), 0);
   const Vec2 edge = polar(l.rose_centre_px, l.rose_radius_px, -30.0 * kDegToRad);
   EXPECT_EQ(count(image, window(edge, 12.0), is_cyan), 0);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "common/units/units.hpp"
@@ -48,6 +49,8 @@ TEST(Pfd, HorizonAtThePixelThePitchImplies) {
     // Nose up puts the horizon below the aircraft symbol.
     const double expected = l.adi_centre_px.y() + pitch_deg * l.pixels_per_degree;
     EXPECT_NEAR(*boundary, expected, 0.75) << "pitch " << pitch_deg << " deg";
+    std::printf("pitch %+5.1f deg: horizon at row %.2f, expected %.2f px\n", pitch_deg, *boundary,
+                expected);
     // Negative control: 1 deg more or less is 4 px away and fails the same check.
     for (double error : {-1.0, 1.0}) {
       EXPECT_GT(std::abs(*boundary - (expected + error * l.pixels_per_degree)), 0.75);
@@ -57,22 +60,32 @@ TEST(Pfd, HorizonAtThePixelThePitchImplies) {
 
 TEST(Pfd, RollTiltsTheHorizonByTheRollAngle) {
   const PfdLayout l = pfd_layout(kSize, kSize);
-  const double dx = 40.0;  // px either side of the centre, clear of the ladder and the wings
+  const int y0 = static_cast<int>(l.adi_px.y0), y1 = static_cast<int>(l.adi_px.y1);
   for (double roll_deg : {20.0, -20.0, 8.0}) {
     PfdInputs in = level_flight();
     in.roll_rad = roll_deg * kDegToRad;
     const Image image = render(in);
-    const int y0 = static_cast<int>(l.adi_px.y0), y1 = static_cast<int>(l.adi_px.y1);
-    const auto left =
-        sky_ground_boundary(image, static_cast<int>(l.adi_centre_px.x() - dx), y0, y1);
-    const auto right =
-        sky_ground_boundary(image, static_cast<int>(l.adi_centre_px.x() + dx), y0, y1);
-    ASSERT_TRUE(left && right) << roll_deg;
+    // The boundary in the columns 58-75 px either side of the centre (outside the aircraft
+    // symbol's wings, inside the window), fitted by least squares: a row is a whole pixel, the
+    // fit over 36 columns resolves the slope to a few hundredths of a degree.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (int side : {-1, 1}) {
+      for (int dx = 58; dx < 76; ++dx) {
+        const int col = static_cast<int>(l.adi_centre_px.x()) + side * dx;
+        const auto y = sky_ground_boundary(image, col, y0, y1);
+        ASSERT_TRUE(y) << roll_deg << " column " << col;
+        const double x = col + 0.5;
+        sx += x, sy += *y, sxx += x * x, sxy += x * *y, ++n;
+      }
+    }
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
     // Right wing down: the horizon's right end rises (rows counted downwards).
-    const double measured_deg = std::atan2(*left - *right, 2.0 * dx) / kDegToRad;
-    EXPECT_NEAR(measured_deg, roll_deg, 0.75) << "roll " << roll_deg;
-    EXPECT_GT(std::abs(measured_deg - (roll_deg + 3.0)), 0.75);  // negative control
-    EXPECT_GT(std::abs(measured_deg - (roll_deg - 3.0)), 0.75);
+    const double measured_deg = -std::atan(slope) / kDegToRad;
+    EXPECT_NEAR(measured_deg, roll_deg, 0.5) << "roll " << roll_deg;
+    std::printf("roll %+5.1f deg: horizon slope %+.2f deg\n", roll_deg, measured_deg);
+    EXPECT_GT(std::abs(measured_deg - (roll_deg + 2.0)), 0.5);  // negative control
+    EXPECT_GT(std::abs(measured_deg - (roll_deg - 2.0)), 0.5);
   }
 }
 
@@ -110,6 +123,8 @@ TEST(Pfd, LocalizerDiamondMovesByTheDotsCommanded) {
     // Fly right (+): the beam, and the diamond, are right of centre.
     const double expected = l.localizer_centre_px.x() + dots * l.localizer_dot_px;
     EXPECT_NEAR(c->x(), expected, 1.0) << dots << " dots";
+    std::printf("localizer %+4.1f dots: diamond at x %.2f, expected %.2f px\n", dots, c->x(),
+                expected);
     EXPECT_NEAR(c->y(), l.localizer_centre_px.y(), 1.0);
     EXPECT_GT(std::abs(c->x() - (expected + 0.25 * l.localizer_dot_px)), 1.0);  // control
   }
