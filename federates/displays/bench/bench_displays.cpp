@@ -11,8 +11,18 @@
 // hud_over_ksfo.png: the HUD composited over the image generator's picture of KSFO from the
 // same eye (visual_model, the same ChannelConfig), its flight-path vector on the aiming point.
 // The last line is one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU).
+#include "common/units/units.hpp"
+#include "displays/model/composite.hpp"
+#include "displays/model/display_renderer.hpp"
+#include "visual/model/airport_scene.hpp"
+#include "visual/model/osmesa_context.hpp"
+#include "visual/model/renderer.hpp"
+#include "visual/model/test/ksfo_runways.hpp"
+
 #include <CLI/CLI.hpp>
 #include <GeographicLib/Geodesic.hpp>
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,17 +30,9 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include "common/units/units.hpp"
-#include "displays/model/display_renderer.hpp"
-#include "visual/model/airport_scene.hpp"
-#include "visual/model/osmesa_context.hpp"
-#include "visual/model/renderer.hpp"
-#include "visual/model/test/ksfo_runways.hpp"
 
 namespace {
 

@@ -1,10 +1,10 @@
 #include "displays/model/canvas.hpp"
 
+#include "common/units/units.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include "common/units/units.hpp"
 
 namespace fedsim::displays {
 

@@ -12,12 +12,13 @@
 // shader discards outside it), so a tape's labels stop at the tape's edge.
 #pragma once
 
+#include "displays/model/font_atlas.hpp"
+
 #include <Eigen/Core>
+
 #include <initializer_list>
 #include <string_view>
 #include <vector>
-
-#include "displays/model/font_atlas.hpp"
 
 namespace fedsim::displays {
 

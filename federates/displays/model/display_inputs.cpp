@@ -1,9 +1,9 @@
 #include "displays/model/display_inputs.hpp"
 
-#include <string>
-
 #include "common/units/units.hpp"
 #include "visual/model/input_checks.hpp"
+
+#include <string>
 
 namespace fedsim::displays {
 

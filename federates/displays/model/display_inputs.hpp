@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Core>
+
 #include <optional>
 #include <string>
 #include <string_view>

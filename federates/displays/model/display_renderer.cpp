@@ -1,8 +1,5 @@
 #include "displays/model/display_renderer.hpp"
 
-#include <algorithm>
-#include <stdexcept>
-
 #include "displays/model/canvas.hpp"
 #include "displays/model/hud.hpp"
 #include "displays/model/nd.hpp"
@@ -11,6 +8,9 @@
 #include "visual/model/input_checks.hpp"
 #include "visual/model/osmesa_context.hpp"
 #include "visual/model/render_target.hpp"
+
+#include <algorithm>
+#include <stdexcept>
 
 namespace fedsim::displays {
 
@@ -218,23 +218,6 @@ const FontAtlas& DisplayRenderer::atlas() const { return impl_->atlas; }
 std::string DisplayRenderer::description() const {
   impl_->context->make_current();  // the description is read through the current context
   return impl_->context->description();
-}
-
-void composite_over(visual::Image& channel, const visual::Image& hud) {
-  if (channel.width_px != hud.width_px || channel.height_px != hud.height_px ||
-      channel.rgba.size() != hud.rgba.size()) {
-    throw std::invalid_argument("composite_over: the HUD is " + std::to_string(hud.width_px) + "x" +
-                                std::to_string(hud.height_px) + ", the channel " +
-                                std::to_string(channel.width_px) + "x" +
-                                std::to_string(channel.height_px));
-  }
-  for (std::size_t i = 0; i < channel.rgba.size(); i += 4) {
-    const int keep = 255 - hud.rgba[i + 3];
-    for (std::size_t k = 0; k < 4; ++k) {
-      const int out = hud.rgba[i + k] + (channel.rgba[i + k] * keep + 127) / 255;
-      channel.rgba[i + k] = static_cast<std::uint8_t>(std::min(out, 255));
-    }
-  }
 }
 
 }  // namespace fedsim::displays

@@ -16,16 +16,16 @@
 // the field; GL failures std::runtime_error.
 #pragma once
 
-#include <cstddef>
-#include <memory>
-#include <string>
-
 #include "displays/model/display_inputs.hpp"
 #include "displays/model/font_atlas.hpp"
 #include "visual/model/channel_config.hpp"
 #include "visual/model/gl_context.hpp"
 #include "visual/model/image.hpp"
 #include "visual/model/renderer.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <string>
 
 namespace fedsim::displays {
 
@@ -63,10 +63,5 @@ class DisplayRenderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-/// Blends a HUD picture (premultiplied alpha, as render_hud() gives it) over a channel's
-/// picture of the same size: out = hud + channel * (1 - alpha_hud), per channel, rounded.
-/// Throws std::invalid_argument when the sizes differ.
-void composite_over(visual::Image& channel, const visual::Image& hud);
 
 }  // namespace fedsim::displays

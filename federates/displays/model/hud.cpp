@@ -1,12 +1,12 @@
 #include "displays/model/hud.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-
 #include "common/math/rotation.hpp"
 #include "common/units/units.hpp"
 #include "displays/model/palette.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace fedsim::displays {
 

@@ -18,12 +18,13 @@
 // speed is at least 2 m/s (a HUD removes it when the velocity is unknown).
 #pragma once
 
-#include <Eigen/Core>
-#include <optional>
-
 #include "displays/model/canvas.hpp"
 #include "displays/model/display_inputs.hpp"
 #include "visual/model/channel_config.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
 
 namespace fedsim::displays {
 

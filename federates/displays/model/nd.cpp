@@ -1,11 +1,11 @@
 #include "displays/model/nd.hpp"
 
+#include "common/units/units.hpp"
+#include "displays/model/palette.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-#include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 namespace fedsim::displays {
 

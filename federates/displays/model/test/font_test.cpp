@@ -1,11 +1,11 @@
 // FreeType rasterises the DejaVu faces into the atlas: real glyphs with coverage, a blank
 // space, monospaced digits in the mono face (readouts keep their columns), and a missing font
 // named in the error.
+#include "displays/model/font_atlas.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
-
-#include "displays/model/font_atlas.hpp"
 
 namespace fedsim::displays {
 namespace {

@@ -4,17 +4,17 @@
 // projects them; everything else is transparent. Negative control: the same measurement
 // against a camera pitched 1 deg differently fails.
 #include "displays/model/hud.hpp"
+#include "common/units/units.hpp"
+#include "displays/model/composite.hpp"
+#include "displays/model/test/test_support.hpp"
+#include "visual/model/channel_camera.hpp"
+#include "visual/model/scene_frame.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <random>
-
-#include "common/units/units.hpp"
-#include "displays/model/test/test_support.hpp"
-#include "visual/model/channel_camera.hpp"
-#include "visual/model/scene_frame.hpp"
 
 namespace fedsim::displays::test {
 namespace {

@@ -3,14 +3,13 @@
 // range, navaids beyond range left out, the HSI's deviation bar replaced by the flag when the
 // course signal fails. Negative controls: the mirror-image angle, an out-of-range navaid.
 #include "displays/model/nd.hpp"
+#include "common/units/units.hpp"
+#include "displays/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-
-#include "common/units/units.hpp"
-#include "displays/model/test/test_support.hpp"
 
 namespace fedsim::displays::test {
 namespace {

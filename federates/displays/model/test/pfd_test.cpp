@@ -3,15 +3,14 @@
 // invalid pointers, and errors naming the field. Each check has a negative control that fails
 // it (a 1 deg pitch error, a 3 deg roll error, a quarter-dot deviation error).
 #include "displays/model/pfd.hpp"
+#include "common/units/units.hpp"
+#include "displays/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-
-#include "common/units/units.hpp"
-#include "displays/model/test/test_support.hpp"
 
 namespace fedsim::displays::test {
 namespace {

@@ -3,16 +3,16 @@
 // edges), centroids and counts over rectangles, and where test pictures go.
 #pragma once
 
+#include "displays/model/canvas.hpp"
+#include "displays/model/display_renderer.hpp"
+#include "visual/model/image.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
-
-#include "displays/model/canvas.hpp"
-#include "displays/model/display_renderer.hpp"
-#include "visual/model/image.hpp"
 
 namespace fedsim::displays::test {
 

@@ -1,0 +1,16 @@
+// Putting the HUD on the outside world (seed 5.9: the HUD projected as an overlay on the
+// visual system, focused at infinity with it): the HUD picture from DisplayRenderer::
+// render_hud() blended over the visual channel's picture it was drawn for.
+#pragma once
+
+#include "visual/model/image.hpp"
+
+namespace fedsim::displays {
+
+/// Blends `hud` (premultiplied alpha, as render_hud() gives it: colour already times alpha)
+/// over `channel` of the same size, in place: out = hud + channel * (255 - alpha_hud) / 255,
+/// per channel (alpha too), rounded to nearest. Throws std::invalid_argument naming both sizes
+/// when they differ.
+void composite_over(visual::Image& channel, const visual::Image& hud);
+
+}  // namespace fedsim::displays
