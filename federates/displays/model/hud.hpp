@@ -13,7 +13,7 @@
 // y_px = H/2 (1 + (z_C/x_C) / tan(vfov/2)) (channel_camera.hpp). hud_test checks it against
 // ChannelCamera to 1e-3 px and the drawn symbols against ChannelCamera to 1 px.
 // The horizon line is the zero-pitch line (the local horizontal through the eye), as on a HUD;
-// the visual's earth horizon dips below it by sqrt(2 h / R) (2 mrad at 13 000 ft).
+// the visual's earth horizon dips below it by sqrt(2 h / R) (6 mrad at 120 m, 35 mrad at 4000 m).
 // The flight-path vector is the direction of the velocity over the ground; it is drawn when the
 // speed is at least 2 m/s (a HUD removes it when the velocity is unknown).
 #pragma once
