@@ -3,6 +3,7 @@
 #include "common/units/units.hpp"
 #include "visual/model/input_checks.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace fedsim::displays {
@@ -90,17 +91,33 @@ void validate(const PfdInputs& in, std::string_view where) {
 
 namespace {
 
-void check(const BearingPointer& p, std::string_view where, std::string_view name) {
-  check_angle(p.relative_bearing_rad, 360.0, where, std::string(name) + ".relative_bearing_rad");
-  check_text(p.ident, kIdentChars, where, std::string(name) + ".ident");
+void check(const BearingPointer& p, std::string_view where, const char* bearing_field,
+           const char* ident_field) {
+  check_angle(p.relative_bearing_rad, 360.0, where, bearing_field);
+  check_text(p.ident, kIdentChars, where, ident_field);
 }
 
+bool in_range(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+// The field's name ("navaids[3].distance_m") is only built for a bad value: the checks run
+// every frame and should not allocate.
 void check_navaids(const std::vector<Navaid>& navaids, std::string_view where) {
+  constexpr double kMaxBearing = units::kTwoPi, kMaxDistanceM = 2.0e7;  // 360 deg
   for (std::size_t i = 0; i < navaids.size(); ++i) {
-    const std::string name = "navaids[" + std::to_string(i) + "]";
-    check_text(navaids[i].ident, kIdentChars, where, name + ".ident");
-    check_angle(navaids[i].bearing_rad, 360.0, where, name + ".bearing_rad");
-    require_in_range(navaids[i].distance_m, 0.0, 2.0e7, where, name + ".distance_m", "m");
+    const Navaid& n = navaids[i];
+    const auto name = [i](const char* field) {
+      return "navaids[" + std::to_string(i) + "]." + field;
+    };
+    if (n.ident.size() > kIdentChars) check_text(n.ident, kIdentChars, where, name("ident"));
+    if (!in_range(n.bearing_rad, -kMaxBearing, kMaxBearing)) {
+      check_angle(n.bearing_rad, 360.0, where, name("bearing_rad"));
+    }
+    if (!in_range(n.distance_m, 0.0, kMaxDistanceM)) {
+      require_in_range(n.distance_m, 0.0, kMaxDistanceM, where, name("distance_m"), "m");
+    }
+    for (char c : n.ident) {
+      if (c < 32 || c > 126) check_text(n.ident, kIdentChars, where, name("ident"));
+    }
   }
 }
 
@@ -115,8 +132,8 @@ void validate(const NdInputs& in, std::string_view where) {
   check_text(in.course_ident, kIdentChars, where, "course_ident");
   require_in_range(in.course_deviation_dots, -10.0, 10.0, where, "course_deviation_dots", "dots");
   require_in_range(in.dme_distance_m, 0.0, 1.0e6, where, "dme_distance_m", "m");
-  check(in.bearing1, where, "bearing1");
-  check(in.bearing2, where, "bearing2");
+  check(in.bearing1, where, "bearing1.relative_bearing_rad", "bearing1.ident");
+  check(in.bearing2, where, "bearing2.relative_bearing_rad", "bearing2.ident");
   check_navaids(in.navaids, where);
   require_in_range(in.range_nm, 5.0, 640.0, where, "range_nm", "NM");
   check_optional(in.ground_speed_mps, 0.0, 1000.0, where, "ground_speed_mps", "m/s");
