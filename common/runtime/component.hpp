@@ -83,7 +83,8 @@ class Output;
   X(AutopilotState)                  \
   X(MotionPlatformState)             \
   X(ControlLoadingState)             \
-  X(VisualChannelStatus)
+  X(VisualChannelStatus)             \
+  X(VisualPicture)
 
 class PortBinder {
  public:

@@ -6,7 +6,7 @@ namespace fedsim::runtime {
 
 const std::vector<std::string_view>& qos::all() {
   static const std::vector<std::string_view> profiles = {kTick,         kFrameDone, kState,
-                                                         kLockstepData, kCommand,   kStatus};
+                                                         kLockstepData, kCommand,   kStatus, kPicture};
   return profiles;
 }
 
@@ -62,13 +62,16 @@ const Topic<msg::ControlLoadingState> control_loading_state = frame_topic<msg::C
     msg::TOPIC_CONTROL_LOADING_STATE, qos::kState, true, "control loader positions and forces");
 const Topic<msg::VisualChannelStatus> visual_status = topic<msg::VisualChannelStatus>(
     msg::TOPIC_VISUAL_STATUS, qos::kStatus, false, "each image generator's render time and age");
+const Topic<msg::VisualPicture> visual_picture = topic<msg::VisualPicture>(
+    msg::TOPIC_VISUAL_PICTURE, qos::kPicture, false,
+    "each image generator's live picture (JPEG, a few per second)");
 
 const std::vector<const TopicInfo*>& all() {
   static const std::vector<const TopicInfo*> every = {
       &frame_tick.info,     &frame_done.info,       &sim_command.info,
       &federate_status.info, &pilot_controls.info,  &aircraft_state.info,
       &engine_state.info,   &navigation_state.info, &autopilot_state.info, &motion_state.info,
-      &control_loading_state.info, &visual_status.info};
+      &control_loading_state.info, &visual_status.info, &visual_picture.info};
   return every;
 }
 

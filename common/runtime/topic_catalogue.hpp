@@ -23,6 +23,7 @@ inline constexpr std::string_view kState = "state";                // best effor
 inline constexpr std::string_view kLockstepData = "lockstep_data"; // reliable, transient local
 inline constexpr std::string_view kCommand = "command";            // reliable, transient local
 inline constexpr std::string_view kStatus = "status";              // reliable, liveliness
+inline constexpr std::string_view kPicture = "picture";            // best effort, keep last 1, large
 /// Suffix of the reliable variants of tick and frame_done (--sync-qos reliable).
 inline constexpr std::string_view kReliableSuffix = "_reliable";
 /// Every data profile above (participant profiles are listed in qos/README.md).
@@ -63,6 +64,7 @@ extern const Topic<msg::AutopilotState> autopilot_state;
 extern const Topic<msg::MotionPlatformState> motion_state;
 extern const Topic<msg::ControlLoadingState> control_loading_state;
 extern const Topic<msg::VisualChannelStatus> visual_status;
+extern const Topic<msg::VisualPicture> visual_picture;
 
 /// Every topic above, in this order.
 const std::vector<const TopicInfo*>& all();
@@ -83,7 +85,7 @@ bool visit(std::string_view name, Visitor&& visitor) {
   return try_one(frame_tick) || try_one(frame_done) || try_one(sim_command) ||
          try_one(federate_status) || try_one(pilot_controls) || try_one(aircraft_state) ||
          try_one(engine_state) || try_one(navigation_state) || try_one(autopilot_state) || try_one(motion_state) ||
-         try_one(control_loading_state) || try_one(visual_status);
+         try_one(control_loading_state) || try_one(visual_status) || try_one(visual_picture);
 }
 }  // namespace topics
 

@@ -11,6 +11,7 @@
 #include "fedsim/msg/motionPubSubTypes.h"
 #include "fedsim/msg/navigationPubSubTypes.h"
 #include "fedsim/msg/statusPubSubTypes.h"
+#include "fedsim/msg/visualPubSubTypes.h"
 
 #include <concepts>
 
@@ -37,6 +38,7 @@ FEDSIM_TOPIC_TYPE(MotionPlatformState)
 FEDSIM_TOPIC_TYPE(ControlLoadingState)
 FEDSIM_TOPIC_TYPE(FederateStatus)
 FEDSIM_TOPIC_TYPE(VisualChannelStatus)
+FEDSIM_TOPIC_TYPE(VisualPicture)
 
 #undef FEDSIM_TOPIC_TYPE
 

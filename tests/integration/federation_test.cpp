@@ -9,6 +9,8 @@
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/csv/csv_reader.hpp"
 #include "io/model/input_profile.hpp"
+#include "visual/model/image.hpp"
+#include "visual/model/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -744,6 +746,99 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
   EXPECT_EQ(cl->exit_code(), 1);  // a fault shows in the exit status
 }
 
+
+
+// An image-generator channel in a realtime federation over DDS: passive (not in --expect), it
+// draws the 737 on the KSFO 28R approach from the pack's eye point, reports each image on
+// fedsim/visual_status, publishes JPEG pictures (fragmented samples over UDP) that decode to
+// the channel's picture halved, writes a PNG when `fedsim command snapshot` asks, and its last
+// image on stop. Negative control: a snapshot for another channel writes nothing.
+TEST(Federation, AVisualChannelDrawsTheApproachAndSnapshotsOnCommand) {
+  const int domain = 153;
+  const std::string dir = temp_dir("visual");
+  std::ofstream(dir + "/profile.csv") << "time_s,elevator\n0,0\n";
+  struct Seen {
+    std::mutex mutex;
+    msg::VisualChannelStatus status;
+    std::uint64_t statuses = 0;
+    std::vector<std::uint8_t> jpeg;
+    int pictures = 0, picture_width = 0;
+  } seen;
+  auto dds = instructor_participant(domain);
+  runtime::Subscription<msg::VisualChannelStatus> status(
+      dds, runtime::topics::visual_status, {}, [&](const msg::VisualChannelStatus& m, const auto&) {
+        std::lock_guard lock(seen.mutex);
+        seen.status = m;
+        ++seen.statuses;
+      });
+  runtime::Subscription<msg::VisualPicture> pictures(
+      dds, runtime::topics::visual_picture, {}, [&](const msg::VisualPicture& m, const auto&) {
+        std::lock_guard lock(seen.mutex);
+        seen.jpeg = m.data();
+        seen.picture_width = m.width_px();
+        ++seen.pictures;
+      });
+  const std::string b737 = std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml";
+  auto io = start(dir, "io", domain, "fedsim-io", {"--profile", dir + "/profile.csv"});
+  auto flight = start(dir, "flight", domain, "fedsim-flight",
+                      {"--aircraft", b737, "--airport", "KSFO", "--runway", "28R", "--approach-nm", "3",
+                       "--alt-ft", "1000", "--kcas", "145", "--flaps", "0.875", "--gear-down", "--controls",
+                       "relative"});
+  auto visual = start(dir, "visual", domain, "fedsim-visual",
+                      {"--aircraft", b737, "--render-hz", "10", "--stream-hz", "2", "--snapshot-dir", dir,
+                       "--final-png", dir + "/final.png", "--cat2-3", "28R"});
+  auto timing = start(dir, "timing", domain, "fedsim-timing",
+                      {"--mode", "realtime", "--rate", "50", "--expect", "io,flight", "--duration", "12",
+                       "--shutdown-on-exit"});
+  for (int i = 0; i < 1500; ++i) {
+    {
+      std::lock_guard lock(seen.mutex);
+      if (seen.statuses >= 5 && seen.pictures >= 2) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  auto command = [&](const std::vector<std::string>& args, const std::string& log) {
+    std::vector<std::string> argv = {bin("fedsim"), "command"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    argv.insert(argv.end(), {"--domain", std::to_string(domain)});
+    ChildProcess cli(argv, dir + "/" + log + ".log");
+    EXPECT_TRUE(cli.wait(20));
+    EXPECT_EQ(cli.exit_code(), 0) << cli.output();
+  };
+  command({"snapshot", "--channel", "left", "--tag", "other"}, "snapshot-left");
+  command({"snapshot", "--tag", "approach"}, "snapshot");
+  ASSERT_TRUE(timing->wait(40)) << timing->output();
+  for (auto* p : {io.get(), flight.get(), visual.get()}) ASSERT_TRUE(p->wait(20)) << p->output();
+  EXPECT_EQ(visual->exit_code(), 0) << visual->output();
+
+  const visual::Image snapshot = visual::read_png(dir + "/centre_approach.png");
+  EXPECT_EQ(snapshot.width_px, 800);
+  EXPECT_EQ(snapshot.height_px, 600);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/centre_other.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/left_other.png"));
+  const visual::Image last = visual::read_png(dir + "/final.png");
+  EXPECT_EQ(last.width_px, 800);
+  // The picture is a scene: sky above the horizon, the ground below differ.
+  double top = 0, bottom = 0;
+  for (int c = 0; c < 800; c += 8) {
+    top += last.at(c, 20).luminance();
+    bottom += last.at(c, 580).luminance();
+  }
+  EXPECT_GT(std::abs(top - bottom) / 100.0, 0.05);
+  std::lock_guard lock(seen.mutex);
+  EXPECT_GE(seen.status.frames_rendered(), 30u);  // 10 a second over most of the run
+  EXPECT_GT(seen.status.render_time_ms(), 0.0f);
+  EXPECT_GE(seen.status.state_age_ms(), 0.0f);
+  EXPECT_LE(seen.status.state_age_ms(), 250.0f);
+  EXPECT_EQ(seen.status.snapshots_written(), 1u);
+  ASSERT_GE(seen.pictures, 2);
+  const visual::Image picture = visual::decode_jpeg(seen.jpeg.data(), seen.jpeg.size());
+  EXPECT_EQ(picture.width_px, 400);
+  EXPECT_EQ(seen.picture_width, 400);
+  std::printf("visual channel: %llu images, render %.1f ms, state age %.1f ms, %d pictures of %zu bytes\n",
+              static_cast<unsigned long long>(seen.status.frames_rendered()), seen.status.render_time_ms(),
+              seen.status.state_age_ms(), seen.pictures, seen.jpeg.size());
+}
 
 }  // namespace
 }  // namespace fedsim::testing

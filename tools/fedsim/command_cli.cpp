@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <iostream>
 #include <thread>
@@ -37,7 +38,26 @@ struct CommandOptions {
          visibility_m = 10000, cloud_base_ft = 0;
   std::string turbulence = "none";
   unsigned seed = 0;
+  // snapshot, time of day
+  std::string tag, channel, utc, lights = "on";
 };
+
+// "YYYY-MM-DDTHH:MM:SS" (UTC) as the time-of-day command carries it; false if malformed.
+bool parse_utc(const std::string& text, msg::TimeOfDaySettings& t) {
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
+  double sec = 0.0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%c", &y, &mo, &d, &h, &mi, &sec, &tail) != 6) return false;
+  if (y < 1800 || y > 2200 || mo < 1 || mo > 12 || d < 1 || d > 31 || h < 0 || h > 23 || mi < 0 || mi > 59 ||
+      !(sec >= 0.0 && sec < 60.0)) {
+    return false;
+  }
+  t.year(static_cast<std::uint16_t>(y));
+  t.month(static_cast<std::uint16_t>(mo));
+  t.day(static_cast<std::uint16_t>(d));
+  t.utc_seconds_of_day(h * 3600.0 + mi * 60.0 + sec);
+  return true;
+}
 
 /// The federates alive on the domain, from their (transient-local) status: every one has a
 /// command reader.
@@ -213,6 +233,44 @@ void add_command_commands(CLI::App& app, int& exit_code) {
     w.sea_level_pressure_pa(o->qnh_hpa * 100.0);
     w.visibility_m(o->visibility_m);
     w.cloud_base_m(o->cloud_base_ft * units::kFtToM);
+    exit_code = send(*o, c);
+  });
+
+  auto* snap = cmd->add_subcommand("snapshot", "image generators write a PNG of their picture (--snapshot-dir)");
+  add_common_options(*snap, *o);
+  snap->add_option("--channel", o->channel, "the channel (default: every channel)");
+  snap->add_option("--tag", o->tag, "file-name tag [A-Za-z0-9_-]: <channel>_<tag>.png (default: the frame)");
+  snap->callback([o, &exit_code] {
+    if (o->tag.size() > 48 ||
+        o->tag.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
+      std::cerr << "fedsim command snapshot: --tag '" << o->tag << "': up to 48 characters of [A-Za-z0-9_-]\n";
+      exit_code = 2;
+      return;
+    }
+    msg::SimCommand c;
+    c.kind(msg::COMMAND_SNAPSHOT);
+    c.target(o->channel);
+    c.snapshot().tag(o->tag);
+    c.snapshot().issued_utc_ns(static_cast<unsigned long long>(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+            .count()));
+    exit_code = send(*o, c);
+  });
+
+  auto* tod = cmd->add_subcommand("time-of-day", "set the UTC date and time the image generators light the scene by");
+  add_common_options(*tod, *o);
+  tod->add_option("--utc", o->utc, "YYYY-MM-DDTHH:MM:SS, UTC (e.g. 2026-12-21T05:30:00 is dusk at KSFO)")->required();
+  tod->add_option("--lights", o->lights, "airport lights")->check(CLI::IsMember({"on", "off"}));
+  tod->callback([o, &exit_code] {
+    msg::SimCommand c;
+    c.kind(msg::COMMAND_TIME_OF_DAY);
+    if (!parse_utc(o->utc, c.time_of_day())) {
+      std::cerr << "fedsim command time-of-day: --utc '" << o->utc
+                << "': expected YYYY-MM-DDTHH:MM:SS (UTC, years 1800-2200)\n";
+      exit_code = 2;
+      return;
+    }
+    c.time_of_day().airport_lights_on(o->lights == "on");
     exit_code = send(*o, c);
   });
 

@@ -41,11 +41,11 @@ TEST(QosProfiles, EveryProfileCreatesWriterAndReader) {
       EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, topic, reliable));
     }
   }
-  EXPECT_EQ(qos::all().size(), 6u);
+  EXPECT_EQ(qos::all().size(), 7u);
 }
 
 TEST(TopicCatalogue, EveryTopicHasItsIdlNameTypeAndAKnownProfile) {
-  ASSERT_EQ(topics::all().size(), 12u);
+  ASSERT_EQ(topics::all().size(), 13u);
   for (const TopicInfo* t : topics::all()) {
     SCOPED_TRACE(t->name);
     EXPECT_EQ(t->name.rfind("fedsim/", 0), 0u);

@@ -1,0 +1,81 @@
+#include "visual/model/channel_file.hpp"
+
+#include "common/units/units.hpp"
+
+#include <set>
+#include <stdexcept>
+
+namespace fedsim::visual {
+namespace {
+
+using units::kDegToRad;
+using units::kRadToDeg;
+
+ChannelConfig read_channel(const util::ConfigNode& node) {
+  node.reject_unknown_keys({"name", "eye_offset_m", "heading_offset_deg", "pitch_offset_deg", "roll_offset_deg",
+                            "horizontal_fov_deg", "vertical_fov_deg", "width_px", "height_px", "near_m",
+                            "samples"});
+  ChannelConfig c;
+  c.name = node.string("name");
+  if (c.name.empty() || c.name.size() > 31 || c.name.find_first_not_of(
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
+    node.fail_at("name", "'" + c.name + "': 1-31 characters of [A-Za-z0-9_-] (it names files and topics)");
+  }
+  if (node.has("eye_offset_m")) {
+    const std::vector<double> v = node.numbers("eye_offset_m", 3);
+    for (int i = 0; i < 3; ++i) {
+      if (!(v[i] >= -100.0 && v[i] <= 100.0)) node.fail_at("eye_offset_m", "each component within +-100 m");
+      c.eye_offset_body_m[i] = v[i];
+    }
+  }
+  c.heading_offset_rad = node.number_or("heading_offset_deg", 0.0, -180.0, 180.0) * kDegToRad;
+  c.pitch_offset_rad = node.number_or("pitch_offset_deg", 0.0, -90.0, 90.0) * kDegToRad;
+  c.roll_offset_rad = node.number_or("roll_offset_deg", 0.0, -180.0, 180.0) * kDegToRad;
+  c.horizontal_fov_rad =
+      node.number_or("horizontal_fov_deg", c.horizontal_fov_rad * kRadToDeg, 1.0, 150.0) * kDegToRad;
+  c.vertical_fov_rad = node.number_or("vertical_fov_deg", c.vertical_fov_rad * kRadToDeg, 1.0, 150.0) * kDegToRad;
+  c.width_px = node.integer_or("width_px", c.width_px, 16, 8192);
+  c.height_px = node.integer_or("height_px", c.height_px, 16, 8192);
+  c.near_m = node.number_or("near_m", c.near_m, 0.01, 100.0);
+  c.samples = node.integer_or("samples", c.samples, 1, 4);
+  try {
+    validate(c, "channels");
+  } catch (const std::invalid_argument& e) {
+    node.fail(e.what());
+  }
+  return c;
+}
+
+std::vector<ChannelConfig> read_channels(const util::ConfigNode& root) {
+  root.reject_unknown_keys({"channels"});
+  std::vector<ChannelConfig> channels;
+  std::set<std::string> names;
+  for (const util::ConfigNode& item : root.child("channels").items()) {
+    ChannelConfig c = read_channel(item);
+    if (!names.insert(c.name).second) item.fail_at("name", "'" + c.name + "' is named twice");
+    channels.push_back(std::move(c));
+  }
+  if (channels.empty()) root.fail_at("channels", "at least one channel");
+  return channels;
+}
+
+}  // namespace
+
+std::vector<ChannelConfig> load_channels(const std::string& path) {
+  return read_channels(util::ConfigNode::load_file(path));
+}
+
+std::vector<ChannelConfig> parse_channels(const std::string& text, const std::string& origin) {
+  return read_channels(util::ConfigNode::parse(text, origin));
+}
+
+ChannelConfig load_channel(const std::string& path, const std::string& name) {
+  std::string names;
+  for (ChannelConfig& c : load_channels(path)) {
+    if (c.name == name) return c;
+    names += (names.empty() ? "" : ", ") + c.name;
+  }
+  throw util::ConfigError(path + ": no channel '" + name + "' (the file has: " + names + ")");
+}
+
+}  // namespace fedsim::visual
