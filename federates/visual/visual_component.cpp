@@ -141,7 +141,7 @@ void VisualComponent::on_command(const msg::SimCommand& command) {
       break;
     case msg::COMMAND_TIME_OF_DAY: {
       const auto& t = command.time_of_day();
-      UtcTime utc{t.year(), t.month(), t.day(), t.utc_seconds_of_day()};
+      UtcTime utc{t.year(), t.month(), t.day(), t.utc_time_of_day_s()};
       try {
         sun_direction(utc, 0.0, 0.0);  // checks the date and time
         setup_.time_of_day = utc;

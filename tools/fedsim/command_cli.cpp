@@ -55,7 +55,7 @@ bool parse_utc(const std::string& text, msg::TimeOfDaySettings& t) {
   t.year(static_cast<std::uint16_t>(y));
   t.month(static_cast<std::uint16_t>(mo));
   t.day(static_cast<std::uint16_t>(d));
-  t.utc_seconds_of_day(h * 3600.0 + mi * 60.0 + sec);
+  t.utc_time_of_day_s(h * 3600.0 + mi * 60.0 + sec);
   return true;
 }
 

@@ -11,6 +11,7 @@
 #include "motion/motion_component.hpp"
 #include "nav/nav_component.hpp"
 #include "synthetic/synthetic_component.hpp"
+#include "visual/visual_component.hpp"
 #include "topic/in_process_recorder.hpp"
 
 #include <algorithm>
@@ -31,6 +32,7 @@ const std::map<std::string, runtime::FederateProgram (*)()>& component_programs(
       {"fedsim-motion", &motion::program},
       {"fedsim-control-loading", &control_loading::program},
       {"fedsim-synthetic", &synthetic::program},
+      {"fedsim-visual", &visual::program},
   };
   return programs;
 }

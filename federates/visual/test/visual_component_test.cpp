@@ -207,7 +207,7 @@ TEST_F(VisualComponentTest, FogAndNightChangeThePicture) {
   night.time_of_day().year(2026);
   night.time_of_day().month(6);
   night.time_of_day().day(21);
-  night.time_of_day().utc_seconds_of_day(10.0 * 3600.0);
+  night.time_of_day().utc_time_of_day_s(10.0 * 3600.0);
   night.time_of_day().airport_lights_on(true);
   composition_.command(night);
   const Image dark = snap("night");

@@ -53,7 +53,7 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderAndRecorder) {
             std::string::npos)
       << dot;
   EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
-  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, recorder"),
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, visual, recorder"),
             std::string::npos)
       << graph_text(graph);
   EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> recorder"), std::string::npos);
