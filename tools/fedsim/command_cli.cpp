@@ -259,7 +259,7 @@ void add_command_commands(CLI::App& app, int& exit_code) {
 
   auto* tod = cmd->add_subcommand("time-of-day", "set the UTC date and time the image generators light the scene by");
   add_common_options(*tod, *o);
-  tod->add_option("--utc", o->utc, "YYYY-MM-DDTHH:MM:SS, UTC (e.g. 2026-12-21T05:30:00 is dusk at KSFO)")->required();
+  tod->add_option("--utc", o->utc, "YYYY-MM-DDTHH:MM:SS, UTC (e.g. 2026-12-22T01:30:00 is dusk at KSFO: 17:30 PST)")->required();
   tod->add_option("--lights", o->lights, "airport lights")->check(CLI::IsMember({"on", "off"}));
   tod->callback([o, &exit_code] {
     msg::SimCommand c;
