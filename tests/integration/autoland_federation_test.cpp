@@ -61,7 +61,7 @@ TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
     EXPECT_TRUE(std::filesystem::exists(out + "/ils_autoland.png")) << fedsim.output();
     return std::pair{read_file(out + "/fedsim_aircraft_state.csv"), read_file(out + "/fedsim_autopilot_state.csv")};
   };
-  const auto [dds_aircraft, dds_autopilot] = fly("dds", {"--domain", "142"});
+  const auto [dds_aircraft, dds_autopilot] = fly("dds", {"--domain", "197"});  // a domain no other test uses (ctest -j runs them side by side)
   const auto [local_aircraft, local_autopilot] = fly("in_process", {"--in-process"});
   EXPECT_EQ(std::count(dds_autopilot.begin(), dds_autopilot.end(), '\n'), 20001);  // header + every frame
   // Landed, stopped, the autopilot still engaged in ROLLOUT with no alert, the levers at idle.

@@ -19,6 +19,7 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <ostream>
 #include <thread>
 
@@ -67,6 +68,35 @@ class Recording {
   void flush_all() {
     for (const auto& r : recorders()) r->flush();
   }
+  /// Lockstep, at the stop: the writers wrote the last frame's samples in that frame's step,
+  /// after this federate stepped it, so they may still be on the way. Waits (at most wait_s)
+  /// until every lockstep topic with a writer has delivered `frame`; the topics still short
+  /// are named on err.
+  void wait_for_frame(std::uint64_t frame, double wait_s) {
+    std::vector<std::pair<std::shared_ptr<TopicRecorder>, std::shared_ptr<std::atomic<std::int64_t>>>> topics;
+    {
+      std::lock_guard lock(mutex_);
+      topics = newest_frames_;
+    }
+    const auto short_of = [&] {
+      std::vector<std::string> names;
+      for (const auto& [recorder, newest] : topics) {
+        if (recorder->matched_writers() > 0 && newest->load() < static_cast<std::int64_t>(frame)) {
+          names.push_back(recorder->topic());
+        }
+      }
+      return names;
+    };
+    const auto until = std::chrono::steady_clock::now() + to_ms(wait_s);
+    while (!short_of().empty() && std::chrono::steady_clock::now() < until) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    for (const auto& name : short_of()) {
+      err_ << "fedsim record: " << name << ": the sample of the last frame (" << frame
+           << ") did not arrive within " << wait_s << " s\n";
+    }
+  }
+
   /// Stops every reader (and any later attach); the queues still hold what was received.
   void close_all() {
     {
@@ -133,7 +163,18 @@ class Recording {
     if (federate_) {
       if (recorder->layout().has_frame()) {
         TopicRecorder* r = recorder.get();
-        on_frame = federate_->add_lockstep_input(topic.name, [r] { return r->matched_writers(); });
+        auto input = federate_->add_lockstep_input(topic.name, [r] { return r->matched_writers(); });
+        auto newest = std::make_shared<std::atomic<std::int64_t>>(-1);
+        {
+          std::lock_guard lock(mutex_);
+          newest_frames_.emplace_back(recorder, newest);
+        }
+        on_frame = [input = std::move(input), newest](std::uint64_t frame) {
+          std::int64_t seen = newest->load();
+          while (static_cast<std::int64_t>(frame) > seen && !newest->compare_exchange_weak(seen, frame)) {
+          }
+          input(frame);
+        };
       } else {
         err_ << "fedsim record: " << topic.name
              << " has no frame stamp: recorded, but not as a lockstep input\n";
@@ -162,6 +203,8 @@ class Recording {
   bool stopping_ = false;
   std::vector<std::string> pending_;
   std::vector<std::shared_ptr<TopicRecorder>> recorders_;
+  // Lockstep topics: the newest frame each one delivered.
+  std::vector<std::pair<std::shared_ptr<TopicRecorder>, std::shared_ptr<std::atomic<std::int64_t>>>> newest_frames_;
 };
 
 /// Waits until every topic has a writer (or the time is up), then a little for the rest of
@@ -217,7 +260,9 @@ int record_plain(const RecordOptions& options, Recording& recording, std::ostrea
 
 int record_lockstep(const RecordOptions& options, Recording& recording,
                     runtime::Federate& federate) {
+  std::atomic<std::int64_t> last_frame{-1};
   federate.on_stop([&] {
+    if (last_frame.load() >= 0) recording.wait_for_frame(static_cast<std::uint64_t>(last_frame.load()), 2.0);
     recording.close_all();
     recording.drain_all();
     recording.flush_all();
@@ -239,7 +284,10 @@ int record_lockstep(const RecordOptions& options, Recording& recording,
       }
     }
   });
-  const int rc = federate.run([&](const runtime::FrameContext&) { recording.drain_all(); });
+  const int rc = federate.run([&](const runtime::FrameContext& frame) {
+    last_frame.store(static_cast<std::int64_t>(frame.frame));
+    recording.drain_all();
+  });
   running.store(false);
   housekeeping.join();
   return rc;
