@@ -13,7 +13,7 @@ PACKAGES=(
   # navigation database (SQLite with R*Tree) and its gzip-compressed sources
   libsqlite3-dev zlib1g-dev
   # rendering, plots, images
-  libosmesa6-dev libpng-dev libjpeg62-turbo-dev libegl-dev gnuplot-nox graphviz
+  libosmesa6-dev libpng-dev libjpeg62-turbo-dev gnuplot-nox graphviz
   # cockpit displays: text through FreeType with the DejaVu fonts
   libfreetype-dev fonts-dejavu-core
   # pilot inceptors: joysticks, yokes, pedals through evdev (and uinput virtual devices in tests)
