@@ -264,10 +264,11 @@ void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   const auto slot = static_cast<std::int64_t>(std::floor(static_cast<double>(frame.frame) * period * setup_.stream_hz));
   if (slot == last_stream_slot_) return;
   last_stream_slot_ = slot;
-  const Image& source = setup_.jpeg.downscale == 1 ? image_ : downscale(image_, setup_.jpeg.downscale);
-  encode_jpeg(source, setup_.jpeg, jpeg_);
-  if (jpeg_.size() > msg::VISUAL_PICTURE_MAX_BYTES) {
-    report_fault("picture_too_large", std::to_string(jpeg_.size()) + " bytes (at most " +
+  if (setup_.jpeg.downscale > 1) scaled_ = downscale(image_, setup_.jpeg.downscale);
+  const Image& source = setup_.jpeg.downscale > 1 ? scaled_ : image_;
+  encode_jpeg(source, setup_.jpeg, picture_.data());
+  if (picture_.data().size() > msg::VISUAL_PICTURE_MAX_BYTES) {
+    report_fault("picture_too_large", std::to_string(picture_.data().size()) + " bytes (at most " +
                                           std::to_string(msg::VISUAL_PICTURE_MAX_BYTES) +
                                           "): lower --jpeg-quality or raise --stream-downscale");
     return;
@@ -275,7 +276,6 @@ void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   picture_.stamp(image_stamp_);
   picture_.width_px(static_cast<std::uint16_t>(source.width_px));
   picture_.height_px(static_cast<std::uint16_t>(source.height_px));
-  picture_.data().assign(jpeg_.begin(), jpeg_.end());
   if (visual_picture_.write(picture_)) ++pictures_sent_;
 }
 
@@ -322,19 +322,6 @@ struct Options {
   std::string lights = "on";
   std::string state_qos;
 };
-
-UtcTime parse_utc(const std::string& text) {
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
-  double s = 0.0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%c", &y, &mo, &d, &h, &mi, &s, &tail) != 6 || h > 23 ||
-      mi > 59 || s < 0 || s >= 60.5) {
-    throw std::invalid_argument("--utc '" + text + "': expected YYYY-MM-DDTHH:MM:SS (UTC)");
-  }
-  UtcTime t{y, mo, d, h * 3600.0 + mi * 60.0 + s};
-  sun_direction(t, 0.0, 0.0);  // checks the date
-  return t;
-}
 
 // The airport's ends: those with an ILS drawn as precision CAT I ends (markings, CAT I approach
 // lights), the ends named by --cat2-3 as CAT II/III, the rest non-precision.
@@ -401,14 +388,9 @@ runtime::FederateProgram program() {
   p.make_component = [o](const runtime::FederateOptions& common) {
     VisualSetup setup;
     const std::vector<ChannelConfig> channels = load_channels(o->channels);
-    const auto it = std::find_if(channels.begin(), channels.end(), [&](const ChannelConfig& c) { return c.name == o->channel; });
-    if (it == channels.end()) {
-      std::string names;
-      for (const auto& c : channels) names += (names.empty() ? "" : ", ") + c.name;
-      throw std::invalid_argument(o->channels + ": no channel '" + o->channel + "' (the file has: " + names + ")");
-    }
-    setup.channel = *it;
-    setup.channel_id = static_cast<std::uint16_t>(o->channel_id >= 0 ? o->channel_id : it - channels.begin());
+    const std::size_t index = channel_index(channels, o->channel, o->channels);
+    setup.channel = channels[index];
+    setup.channel_id = static_cast<std::uint16_t>(o->channel_id >= 0 ? o->channel_id : static_cast<int>(index));
     if (!o->aircraft.empty()) setup.channel.eye_offset_body_m += eye_from_cg(o->aircraft);
     const nav::NavDatabase db = nav::NavDatabase::open(o->navdb.empty() ? nav::default_database_path() : o->navdb);
     const std::vector<nav::RunwayEndRecord> ends = db.airport_runways(o->airport);
@@ -428,7 +410,9 @@ runtime::FederateProgram program() {
     setup.environment.visibility_m = o->visibility_m;
     if (o->cloud_base_m > 0.0) setup.environment.cloud = CloudLayer{o->cloud_base_m, o->cloud_base_m + 1000.0, 60.0};
     setup.environment.airport_lights_on = o->lights == "on";
-    setup.time_of_day = parse_utc(o->utc);
+    const std::optional<UtcTime> utc = parse_utc(o->utc);
+    if (!utc) throw std::invalid_argument("--utc '" + o->utc + "': expected YYYY-MM-DDTHH:MM:SS (UTC, 1800-2200)");
+    setup.time_of_day = *utc;
     setup.start_utc_ns = utc_ns();
     setup.state_qos = o->state_qos;
     return std::unique_ptr<runtime::Component>(std::make_unique<VisualComponent>(common.name, std::move(setup)));

@@ -100,7 +100,7 @@ class VisualComponent final : public runtime::Component {
   std::int64_t rate_window_start_ns_ = 0;
   std::uint32_t rate_window_images_ = 0;
   float frame_rate_hz_ = 0.0f;
-  std::vector<std::uint8_t> jpeg_;
+  Image scaled_;  // the picture reduced for the stream
   msg::VisualChannelStatus status_;
   msg::VisualPicture picture_;
 };

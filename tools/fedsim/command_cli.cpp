@@ -2,6 +2,7 @@
 #include "common/runtime/failure_targets.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
+#include "visual/model/sun_position.hpp"
 
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
@@ -11,7 +12,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
 #include <iostream>
 #include <thread>
@@ -41,23 +41,6 @@ struct CommandOptions {
   // snapshot, time of day
   std::string tag, channel, utc, lights = "on";
 };
-
-// "YYYY-MM-DDTHH:MM:SS" (UTC) as the time-of-day command carries it; false if malformed.
-bool parse_utc(const std::string& text, msg::TimeOfDaySettings& t) {
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
-  double sec = 0.0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%c", &y, &mo, &d, &h, &mi, &sec, &tail) != 6) return false;
-  if (y < 1800 || y > 2200 || mo < 1 || mo > 12 || d < 1 || d > 31 || h < 0 || h > 23 || mi < 0 || mi > 59 ||
-      !(sec >= 0.0 && sec < 60.0)) {
-    return false;
-  }
-  t.year(static_cast<std::uint16_t>(y));
-  t.month(static_cast<std::uint16_t>(mo));
-  t.day(static_cast<std::uint16_t>(d));
-  t.utc_time_of_day_s(h * 3600.0 + mi * 60.0 + sec);
-  return true;
-}
 
 /// The federates alive on the domain, from their (transient-local) status: every one has a
 /// command reader.
@@ -264,12 +247,17 @@ void add_command_commands(CLI::App& app, int& exit_code) {
   tod->callback([o, &exit_code] {
     msg::SimCommand c;
     c.kind(msg::COMMAND_TIME_OF_DAY);
-    if (!parse_utc(o->utc, c.time_of_day())) {
+    const std::optional<visual::UtcTime> utc = visual::parse_utc(o->utc);
+    if (!utc) {
       std::cerr << "fedsim command time-of-day: --utc '" << o->utc
                 << "': expected YYYY-MM-DDTHH:MM:SS (UTC, years 1800-2200)\n";
       exit_code = 2;
       return;
     }
+    c.time_of_day().year(static_cast<std::uint16_t>(utc->year));
+    c.time_of_day().month(static_cast<std::uint16_t>(utc->month));
+    c.time_of_day().day(static_cast<std::uint16_t>(utc->day));
+    c.time_of_day().utc_time_of_day_s(utc->seconds_of_day);
     c.time_of_day().airport_lights_on(o->lights == "on");
     exit_code = send(*o, c);
   });

@@ -69,13 +69,19 @@ std::vector<ChannelConfig> parse_channels(const std::string& text, const std::st
   return read_channels(util::ConfigNode::parse(text, origin));
 }
 
-ChannelConfig load_channel(const std::string& path, const std::string& name) {
+std::size_t channel_index(const std::vector<ChannelConfig>& channels, const std::string& name,
+                          const std::string& origin) {
   std::string names;
-  for (ChannelConfig& c : load_channels(path)) {
-    if (c.name == name) return c;
-    names += (names.empty() ? "" : ", ") + c.name;
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    if (channels[i].name == name) return i;
+    names += (names.empty() ? "" : ", ") + channels[i].name;
   }
-  throw util::ConfigError(path + ": no channel '" + name + "' (the file has: " + names + ")");
+  throw util::ConfigError(origin + ": no channel '" + name + "' (the file has: " + names + ")");
+}
+
+ChannelConfig load_channel(const std::string& path, const std::string& name) {
+  const std::vector<ChannelConfig> channels = load_channels(path);
+  return channels[channel_index(channels, name, path)];
 }
 
 }  // namespace fedsim::visual

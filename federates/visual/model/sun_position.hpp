@@ -4,6 +4,7 @@
 // form, NOAA). The instructor's time of day enters the visual system through this.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace fedsim::visual {
@@ -24,5 +25,9 @@ struct SunDirection {
 /// Throws std::invalid_argument naming the field for a date outside 1800-2200, a bad month or
 /// day, seconds outside [0, 86400], latitude outside +-90 deg or longitude outside +-180 deg.
 SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad);
+
+/// "YYYY-MM-DDTHH:MM:SS" (UTC, seconds may have a fraction) as the instructor types it; nullopt
+/// for anything malformed or out of the range sun_direction() accepts.
+std::optional<UtcTime> parse_utc(const std::string& text);
 
 }  // namespace fedsim::visual
