@@ -16,6 +16,9 @@ PACKAGES=(
   libosmesa6-dev libpng-dev libjpeg62-turbo-dev gnuplot-nox graphviz
   # cockpit displays: text through FreeType with the DejaVu fonts
   libfreetype-dev fonts-dejavu-core
+  # instructor station: HTTP + WebSocket server (civetweb), and its browser test (Debian's
+  # chromium driven by playwright-core from npm, installed below; Node.js with npm)
+  libcivetweb-dev chromium nodejs
   # pilot inceptors: joysticks, yokes, pedals through evdev (and uinput virtual devices in tests)
   libevdev-dev
   # tests
@@ -29,14 +32,25 @@ for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#PACKAGES[@]} packages present"
-  exit 0
-fi
-
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+else
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# Debian's own nodejs package comes without npm (NodeSource's includes it).
+if ! command -v npm > /dev/null; then
+  $SUDO apt-get install -y -qq --no-install-recommends npm
+fi
+# The browser tests' packages (tests/browser/package-lock.json: playwright-core, which drives
+# the system's chromium and downloads no browser).
+browser_tests="$(cd "$(dirname "$0")/../tests/browser" && pwd)"
+if [ ! -d "$browser_tests/node_modules/playwright-core" ]; then
+  echo "install-deps: npm ci in tests/browser"
+  npm ci --prefix "$browser_tests" --no-audit --no-fund --loglevel=error
+fi

@@ -114,6 +114,11 @@ int run_in_process(const RunOptions& options) {
         recorders.push_back(parse_recorder(f.name, args));
         continue;
       }
+      if (binary == "fedsim-ios") {
+        // The instructor station is a page on a live federation: nothing to step in-process.
+        std::cout << "fedsim run --in-process: " << f.name << " (fedsim-ios) needs a live federation; not run\n";
+        continue;
+      }
       const auto it = component_programs().find(binary);
       if (it == component_programs().end()) {
         throw util::ConfigError(d.file + ": federate '" + f.name + "': " + binary +

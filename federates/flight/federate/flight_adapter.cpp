@@ -1,6 +1,6 @@
 #include "flight/federate/flight_adapter.hpp"
 
-#include "common/runtime/failure_targets.hpp"
+#include "common/instructor/failure_targets.hpp"
 #include "common/units/units.hpp"
 
 #include <algorithm>
@@ -234,10 +234,10 @@ std::string apply_command(const msg::SimCommand& command, AircraftModel& model,
       return "weather set";
     case msg::COMMAND_FAILURE: {
       const std::string target = command.target().to_string();
-      const auto owner = runtime::failure_target_owner(target);
-      if (owner && *owner != runtime::FailureOwner::kFlight) return {};  // another federate's system
+      const auto owner = instructor::failure_target_owner(target);
+      if (owner && *owner != instructor::FailureOwner::kFlight) return {};  // another federate's system
       if (target.rfind("engine", 0) != 0 || target.size() != 7 || target[6] < '1' || target[6] > '4') {
-        throw std::invalid_argument("unknown failure target '" + target + "' (" + runtime::failure_targets_description() + ")");
+        throw std::invalid_argument("unknown failure target '" + target + "' (" + instructor::failure_targets_description() + ")");
       }
       const std::size_t engine = static_cast<std::size_t>(target[6] - '1');
       if (engine >= model.engine_count()) {

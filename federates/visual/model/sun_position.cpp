@@ -105,21 +105,4 @@ SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad) 
   return s;
 }
 
-std::optional<UtcTime> parse_utc(const std::string& text) {
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
-  double sec = 0.0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%c", &y, &mo, &d, &h, &mi, &sec, &tail) != 6) {
-    return std::nullopt;
-  }
-  if (h < 0 || h > 23 || mi < 0 || mi > 59 || !(sec >= 0.0 && sec < 60.0)) return std::nullopt;
-  const UtcTime t{y, mo, d, h * 3600.0 + mi * 60.0 + sec};
-  try {
-    sun_direction(t, 0.0, 0.0);  // the date's own checks
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;
-  }
-  return t;
-}
-
 }  // namespace fedsim::visual

@@ -4,17 +4,12 @@
 // form, NOAA). The instructor's time of day enters the visual system through this.
 #pragma once
 
-#include <optional>
-#include <string>
+#include "common/instructor/utc_time.hpp"
 
 namespace fedsim::visual {
 
-struct UtcTime {
-  int year = 2000;
-  int month = 1;                    // 1..12
-  int day = 1;                      // 1..31
-  double seconds_of_day = 43200.0;  // UTC seconds since midnight [s]
-};
+using instructor::UtcTime;
+using instructor::parse_utc;
 
 struct SunDirection {
   double elevation_rad = 0.0;  // apparent elevation (refraction included) [rad]
@@ -25,9 +20,5 @@ struct SunDirection {
 /// Throws std::invalid_argument naming the field for a date outside 1800-2200, a bad month or
 /// day, seconds outside [0, 86400], latitude outside +-90 deg or longitude outside +-180 deg.
 SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad);
-
-/// "YYYY-MM-DDTHH:MM:SS" (UTC, seconds may have a fraction) as the instructor types it; nullopt
-/// for anything malformed or out of the range sun_direction() accepts.
-std::optional<UtcTime> parse_utc(const std::string& text);
 
 }  // namespace fedsim::visual

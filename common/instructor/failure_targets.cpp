@@ -1,8 +1,8 @@
-#include "common/runtime/failure_targets.hpp"
+#include "common/instructor/failure_targets.hpp"
 
 #include <array>
 
-namespace fedsim::runtime {
+namespace fedsim::instructor {
 
 std::optional<FailureOwner> failure_target_owner(std::string_view t) {
   if (t.size() == 7 && t.substr(0, 6) == "engine" && t[6] >= '1' && t[6] <= '4') return FailureOwner::kFlight;
@@ -24,4 +24,4 @@ const char* failure_targets_description() {
          "motion (the motion platform: cut-off); control_loading (cut-off)";
 }
 
-}  // namespace fedsim::runtime
+}  // namespace fedsim::instructor

@@ -1,9 +1,9 @@
 // Every failure target has one owner; a typo has none (the command line refuses it).
-#include "common/runtime/failure_targets.hpp"
+#include "common/instructor/failure_targets.hpp"
 
 #include <gtest/gtest.h>
 
-namespace fedsim::runtime {
+namespace fedsim::instructor {
 namespace {
 
 TEST(FailureTargets, EachHasItsOwnerAndATypoHasNone) {
@@ -22,4 +22,4 @@ TEST(FailureTargets, EachHasItsOwnerAndATypoHasNone) {
 }
 
 }  // namespace
-}  // namespace fedsim::runtime
+}  // namespace fedsim::instructor

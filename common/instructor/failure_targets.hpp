@@ -7,7 +7,7 @@
 #include <optional>
 #include <string_view>
 
-namespace fedsim::runtime {
+namespace fedsim::instructor {
 
 enum class FailureOwner { kFlight, kNavigation, kMotion, kControlLoading };
 
@@ -19,4 +19,4 @@ std::optional<FailureOwner> failure_target_owner(std::string_view target);
 /// The targets above in words, for --help and errors.
 const char* failure_targets_description();
 
-}  // namespace fedsim::runtime
+}  // namespace fedsim::instructor
