@@ -206,13 +206,10 @@ class Station {
  public:
   explicit Station(const StationOptions& options)
       : options_(options),
-        db_(nav::NavDatabase::open(options.navdb_file)),
+        db_(nav::NavDatabase::open(options.navdb_file.empty() ? nav::default_database_path() : options.navdb_file)),
         server_(options.server) {
     register_routes();
-    server_.set_greeting([this] {
-      std::lock_guard lock(shared_.mutex);
-      return state_message(shared_, clock_s(), server_.statistics(), options_.push_hz);
-    });
+    server_.set_greeting([this] { return current_state(); });
   }
 
   int run() {
@@ -270,14 +267,24 @@ class Station {
         [this](const msg::VisualPicture& p, const auto&) { note_picture(p); }));
   }
 
+  // The frame thread only stores the tick (no lock: a push being built never holds a frame).
   void note_frame(const runtime::FrameContext& f) {
-    const double now = clock_s();
-    std::lock_guard lock(shared_.mutex);
-    shared_.fields.set("timing", "frame", static_cast<double>(f.frame), now);
-    shared_.fields.set("timing", "sim_time_s", f.sim_time_s, now);
-    shared_.fields.set("timing", "run_state", static_cast<double>(f.run_state), now);
-    shared_.fields.set("timing", "mode", static_cast<double>(f.mode), now);
-    shared_.fields.set("timing", "frame_period_s", f.frame_period_s, now);
+    tick_frame_.store(f.frame, std::memory_order_relaxed);
+    tick_sim_time_s_.store(f.sim_time_s, std::memory_order_relaxed);
+    tick_run_state_.store(static_cast<int>(f.run_state), std::memory_order_relaxed);
+    tick_mode_.store(static_cast<int>(f.mode), std::memory_order_relaxed);
+    tick_period_s_.store(f.frame_period_s, std::memory_order_relaxed);
+    ticks_.fetch_add(1, std::memory_order_release);
+  }
+
+  /// The station's "timing" view in the registry, from the newest tick (under shared_.mutex).
+  void copy_tick_locked(double now) {
+    if (ticks_.load(std::memory_order_acquire) == 0) return;
+    shared_.fields.set("timing", "frame", static_cast<double>(tick_frame_.load()), now);
+    shared_.fields.set("timing", "sim_time_s", tick_sim_time_s_.load(), now);
+    shared_.fields.set("timing", "run_state", tick_run_state_.load(), now);
+    shared_.fields.set("timing", "mode", tick_mode_.load(), now);
+    shared_.fields.set("timing", "frame_period_s", tick_period_s_.load(), now);
   }
 
   void note_status(const msg::FederateStatus& s) {
@@ -322,16 +329,18 @@ class Station {
       wake_.wait_until(wait_lock, next, [this] { return stopping_.load(); });
       if (stopping_.load()) break;
       std::string message;
+      const ServerStatistics statistics = server_.statistics();  // before shared_.mutex: one lock order
       {
         std::lock_guard lock(shared_.mutex);
         const double now = clock_s();
+        copy_tick_locked(now);
         for (const auto& c : shared_.tracker.update(now, shared_.lookup())) {
           if (federate_) federate_->log().info("command {} '{}': {} ({})", c.sequence, c.text, status_name(c.status), c.evidence);
         }
         if (shared_.pushes == 0) shared_.first_push_s = now;
         shared_.last_push_s = now;
         ++shared_.pushes;
-        message = state_message(shared_, now, server_.statistics(), options_.push_hz);
+        message = state_message(shared_, now, statistics, options_.push_hz);
       }
       server_.broadcast(message);
     }
@@ -358,6 +367,7 @@ class Station {
     std::uint32_t sequence = 0;
     {
       std::lock_guard lock(shared_.mutex);
+      copy_tick_locked(clock_s());
       sequence = shared_.next_sequence++;
       shared_.tracker.sent(sequence, command, clock_s(), shared_.lookup(), expected);
     }
@@ -375,8 +385,7 @@ class Station {
   void register_routes() {
     server_.handle("POST", "/api/command", [this](const HttpRequest& r) { return send_command(r); });
     server_.handle("GET", "/api/state", [this](const HttpRequest&) {
-      std::lock_guard lock(shared_.mutex);
-      return HttpResponse{200, "application/json", state_message(shared_, clock_s(), server_.statistics(), options_.push_hz)};
+      return HttpResponse{200, "application/json", current_state()};
     });
     server_.handle("GET", "/api/map", [this](const HttpRequest& r) {
       std::string airport = r.parameter("airport");
@@ -413,9 +422,17 @@ class Station {
     });
   }
 
-  void print_summary() {
+  std::string current_state() {
+    const ServerStatistics statistics = server_.statistics();
     std::lock_guard lock(shared_.mutex);
+    const double now = clock_s();
+    copy_tick_locked(now);
+    return state_message(shared_, now, statistics, options_.push_hz);
+  }
+
+  void print_summary() {
     const ServerStatistics s = server_.statistics();
+    std::lock_guard lock(shared_.mutex);
     const double span = shared_.last_push_s - shared_.first_push_s;
     std::size_t confirmed = 0, unconfirmed = 0;
     for (const auto& c : shared_.tracker.commands()) {
@@ -440,6 +457,10 @@ class Station {
   runtime::Publisher<msg::SimCommand>* commands_ = nullptr;
   std::vector<std::shared_ptr<void>> taps_;
   std::atomic<bool> stopping_{false};
+  // The newest tick, as the frame thread left it.
+  std::atomic<std::uint64_t> tick_frame_{0}, ticks_{0};
+  std::atomic<double> tick_sim_time_s_{0.0}, tick_period_s_{0.0};
+  std::atomic<int> tick_run_state_{0}, tick_mode_{0};
   std::mutex wake_mutex_;
   std::condition_variable wake_;
 };

@@ -212,11 +212,11 @@ int WebServer::on_ws_connect(const mg_connection* conn, void* self_ptr) {
 
 void WebServer::on_ws_ready(mg_connection* conn, void* self_ptr) {
   auto* self = static_cast<WebServer*>(self_ptr);
+  // The greeting is built before clients_mutex_ is taken: the greeting may take the host's own
+  // locks, and the host takes them before statistics() takes clients_mutex_ (one lock order).
+  const std::string hello = self->greeting_ ? self->greeting_() : std::string();
   std::lock_guard lock(self->clients_mutex_);
-  if (self->greeting_) {
-    const std::string hello = self->greeting_();
-    mg_websocket_write(conn, MG_WEBSOCKET_OPCODE_TEXT, hello.data(), hello.size());
-  }
+  if (!hello.empty()) mg_websocket_write(conn, MG_WEBSOCKET_OPCODE_TEXT, hello.data(), hello.size());
   self->clients_.insert(conn);
 }
 
