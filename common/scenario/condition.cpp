@@ -73,11 +73,20 @@ std::pair<std::string, std::string> split_field(std::string_view path) {
                          "' has no topic: write <topic>.<field>, e.g. fedsim/aircraft_state.height_agl_m");
   }
   const auto topic = path.substr(0, dot), field = path.substr(dot + 1);
-  const bool bad_topic = std::find_if_not(topic.begin(), topic.end(), valid_topic_char) != topic.end();
+  // A keyed topic's instance may follow its name in brackets: fedsim/engine_state[0] (one per
+  // engine), fedsim/visual_status[1] (per channel), as the instructor station names them.
+  std::string_view name = topic;
+  if (const auto open = topic.find('['); open != std::string_view::npos && topic.back() == ']' && open + 2 < topic.size()) {
+    const auto index = topic.substr(open + 1, topic.size() - open - 2);
+    if (std::all_of(index.begin(), index.end(), [](char c) { return c >= '0' && c <= '9'; })) name = topic.substr(0, open);
+  }
+  const bool bad_topic = name.empty() || std::find_if_not(name.begin(), name.end(), valid_topic_char) != name.end();
   const bool bad_field = field.empty() || field.front() == '.' || field.back() == '.' ||
                          field.find("..") != std::string_view::npos ||
                          std::find_if_not(field.begin(), field.end(), valid_field_char) != field.end();
-  if (bad_topic) throw ConditionError("topic '" + std::string(topic) + "': letters, digits, _ - / only");
+  if (bad_topic) {
+    throw ConditionError("topic '" + std::string(topic) + "': letters, digits, _ - / only (and an instance: [0])");
+  }
   if (bad_field) {
     throw ConditionError("field '" + std::string(field) + "': a flattened path such as air.tas_mps or velocity_ned_mps[2]");
   }

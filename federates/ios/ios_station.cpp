@@ -10,12 +10,8 @@
 #include "ios/model/command_tracker.hpp"
 #include "ios/model/live_fields.hpp"
 #include "ios/model/map_layers.hpp"
-#include "tools/topic/csv_layout.hpp"
-#include "tools/topic/dynamic_types.hpp"
-#include "tools/topic/sample_tree.hpp"
+#include "tools/topic/typed_flattener.hpp"
 
-#include <fastrtps/types/DynamicDataFactory.h>
-#include <fastrtps/types/DynamicPubSubType.h>
 #include <nlohmann/json.hpp>
 
 #include <atomic>
@@ -85,55 +81,40 @@ struct Shared {
   }
 };
 
-/// Flattens the samples of one catalogue topic into the registry: the typed sample is
-/// serialized and read back as the IDL's DynamicData, flattened as the recorder flattens it.
+/// Takes the samples of one catalogue topic into the registry, flattened as the recorder
+/// flattens them, at most a few times a second (RateGate).
 template <class T>
 class TopicTap {
  public:
   TopicTap(const std::shared_ptr<runtime::DdsParticipant>& dds, const runtime::Topic<T>& topic, Shared& shared,
            double period_s)
-      : topic_name_(topic.name()), shared_(shared), gate_(period_s) {
-    type_ = tools::dynamic_type_by_name(topic.info.type_name);
-    if (!type_) throw std::runtime_error("no type object for " + topic.info.type_name);
-    names_ = tools::flattened_field_names(type_);
-    dynamic_ = std::make_unique<eprosima::fastrtps::types::DynamicPubSubType>(type_);
-    scratch_ = eprosima::fastrtps::types::DynamicDataFactory::get_instance()->create_data(type_);
+      : topic_name_(topic.name()), shared_(shared), gate_(period_s), flattener_(topic) {
     subscription_ = std::make_unique<runtime::Subscription<T>>(
         dds, topic, runtime::qos::kState, [this](const T& sample, const auto&) { take(sample); });
   }
-  ~TopicTap() {
-    subscription_.reset();  // no callback after this
-    eprosima::fastrtps::types::DynamicDataFactory::get_instance()->delete_data(scratch_);
-  }
+  ~TopicTap() { subscription_.reset(); }  // no callback after this
 
  private:
   void take(const T& sample) {
     std::lock_guard tap_lock(tap_mutex_);
     const double now = clock_s();
     if (!gate_.admit(now)) return;
-    typename runtime::TopicType<T>::PubSubType support;
-    const std::uint32_t size = support.getSerializedSizeProvider(const_cast<T*>(&sample))();
-    if (payload_.max_size < size) payload_.reserve(size);
-    payload_.length = 0;
-    payload_.pos = 0;
-    if (!support.serialize(const_cast<T*>(&sample), &payload_) || !dynamic_->deserialize(&payload_, scratch_)) {
-      return;
+    std::vector<std::string> cells;
+    try {
+      cells = flattener_.cells(sample);
+    } catch (const std::exception&) {
+      return;  // a sample the IDL's type cannot carry: nothing to show
     }
-    const std::vector<std::string> cells = tools::flattened_cells(tools::read_sample(*scratch_, type_));
-    const std::string instance = instance_name(topic_name_, names_, cells);
+    const std::string instance = instance_name(topic_name_, flattener_.names(), cells);
     std::lock_guard lock(shared_.mutex);
-    shared_.fields.update(instance, names_, cells, now);
+    shared_.fields.update(instance, flattener_.names(), cells, now);
   }
 
   std::string topic_name_;
   Shared& shared_;
   RateGate gate_;
   std::mutex tap_mutex_;
-  eprosima::fastrtps::types::DynamicType_ptr type_;
-  std::vector<std::string> names_;
-  std::unique_ptr<eprosima::fastrtps::types::DynamicPubSubType> dynamic_;
-  eprosima::fastrtps::types::DynamicData* scratch_ = nullptr;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload_;
+  tools::TypedFlattener<T> flattener_;
   std::unique_ptr<runtime::Subscription<T>> subscription_;
 };
 

@@ -12,6 +12,7 @@
 #include "nav/nav_component.hpp"
 #include "synthetic/synthetic_component.hpp"
 #include "visual/visual_component.hpp"
+#include "scenario/scenario_component.hpp"
 #include "topic/in_process_recorder.hpp"
 
 #include <algorithm>
@@ -33,6 +34,7 @@ const std::map<std::string, runtime::FederateProgram (*)()>& component_programs(
       {"fedsim-control-loading", &control_loading::program},
       {"fedsim-synthetic", &synthetic::program},
       {"fedsim-visual", &visual::program},
+      {"fedsim-scenario", &scenario::program},
   };
   return programs;
 }
@@ -99,7 +101,7 @@ int run_in_process(const RunOptions& options) {
   std::vector<RecorderSpec> recorders;
   std::uint64_t frames = 0;
   try {
-    d = load_deployment(options.deployment_path);
+    d = load_with_scenario(options);
     out_dir = options.out_dir.empty() ? "out/" + d.name : options.out_dir;
     fs::create_directories(out_dir + "/logs");
     vars = deployment_vars(options.deployment_path, out_dir);
@@ -147,6 +149,9 @@ int run_in_process(const RunOptions& options) {
 
   runtime::Composition composition({d.rate_hz, false});
   for (auto& c : components) composition.add(*c);
+  // What a member writes on fedsim/sim_command (a scenario's commands) goes to everyone, as over DDS.
+  composition.on_written(runtime::topics::sim_command, std::function<void(const msg::SimCommand&)>(
+                                                           [&composition](const msg::SimCommand& c) { composition.command(c); }));
   std::vector<std::unique_ptr<tools::InProcessRecorder>> recording;
   try {
     for (const RecorderSpec& r : recorders) {

@@ -6,6 +6,7 @@
 #include "common/runtime/subscription.hpp"
 #include "common/util/config_node.hpp"
 #include "common/util/monotonic_clock.hpp"
+#include "common/scenario/scenario.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -239,6 +240,23 @@ int run_after_commands(const Deployment& d, const std::map<std::string, std::str
 
 std::string bin_dir() { return self_dir(); }
 
+Deployment load_with_scenario(const RunOptions& options) {
+  Deployment d = load_deployment(options.deployment_path);
+  if (options.scenario.empty()) return d;
+  scenario::Scenario::load_file(options.scenario);  // its errors now, before anything starts
+  for (const auto& f : d.federates) {
+    if (f.name == "scenario") {
+      throw util::ConfigError(d.file + ": a federate is already named 'scenario'; --scenario adds one");
+    }
+  }
+  FederateSpec spec;
+  spec.name = "scenario";
+  spec.binary = "fedsim-scenario";
+  spec.args = {"--file", fs::absolute(options.scenario).string()};
+  d.federates.push_back(spec);
+  return d;
+}
+
 std::map<std::string, std::string> deployment_vars(const std::string& deployment_path,
                                                    const std::string& out_dir) {
   return {{"SOURCE_DIR", FEDSIM_SOURCE_DIR},
@@ -258,7 +276,7 @@ int run_deployment(const RunOptions& options) {
   std::string log_dir;
   runtime::ParticipantOptions dds;
   try {
-    d = load_deployment(options.deployment_path);
+    d = load_with_scenario(options);
     if (!options.mode.empty()) d.mode = options.mode;
     int domain = d.domain;
     if (const char* env = std::getenv("FEDSIM_DOMAIN"); env && *env) domain = std::atoi(env);

@@ -20,6 +20,7 @@ struct RunOptions {
   double progress_period_s = 2.0;
   bool quiet = false;            // do not echo federate output (it still goes to the log files)
   bool in_process = false;       // compose the federates in this process (no DDS, lockstep)
+  std::string scenario;          // a scenario file run by a fedsim-scenario member ("" = none)
 };
 
 /// Runs the deployment; returns the process exit code (0 = every federate stopped cleanly).
@@ -29,6 +30,10 @@ int run_deployment(const RunOptions& options);
 /// lockstep for the timing arguments' --frames, recording as its `fedsim record` member asks;
 /// then its after-commands. Every federate must be a component program (see in_process.hpp).
 int run_in_process(const RunOptions& options);
+
+/// Loads the deployment and, with options.scenario, adds the fedsim-scenario member that runs
+/// it (the file checked first: a bad one throws util::ConfigError naming file and line).
+Deployment load_with_scenario(const RunOptions& options);
 
 /// The ${...} variables of a deployment's arguments.
 std::map<std::string, std::string> deployment_vars(const std::string& deployment_path,

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--progress", run.progress_period_s, "seconds between progress lines (0 = off)")
       ->capture_default_str();
   run_cmd->add_flag("--quiet", run.quiet, "do not echo federate output (logs are still kept)");
+  run_cmd->add_option("--scenario", run.scenario,
+                      "run this instructor scenario file too (a fedsim-scenario member; data/scenarios has examples)");
   run_cmd->add_flag("--in-process", run.in_process,
                     "compose the federates in this process: no DDS, lockstep, --frames from the "
                     "timing arguments; byte-identical to the DDS lockstep run");
