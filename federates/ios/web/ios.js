@@ -17,7 +17,7 @@ const fedsim = window.fedsim = {
   plot: { series: [], paused: false, windowS: 30 },
   stats: { frames: 0, fps: 0, pushHz: 0 },
   map: null,              // the airport's runways, ILS and navaids
-  view: { lat: 37.62, lon: -122.37, pxPerNm: 12 },
+  view: { lat: 37.62, lon: -122.37, pxPerNm: 22 },
 };
 
 const token = new URLSearchParams(location.search).get('token');
@@ -195,7 +195,7 @@ function drawMap() {
   const m = fedsim.map;
   if (m) {
     // ILS feathers: the localizer sector out to 10 NM from the threshold.
-    for (const ils of m.ils) {
+    m.ils.forEach((ils, k) => {
       const back = (ils.course_deg + 180) % 360;
       const t = ils.threshold;
       const l = offset(t.lat_deg, t.lon_deg, back - ils.half_width_deg, 10);
@@ -213,8 +213,8 @@ function drawMap() {
       g.stroke();
       const [lx, ly] = project(centre.lat, centre.lon);
       g.fillStyle = '#8fc0ff';
-      g.fillText(`${ils.ident} ${ils.mhz.toFixed(2)} ${ils.runway}`, lx + 3, ly);
-    }
+      g.fillText(`${ils.runway} ${ils.ident} ${ils.mhz.toFixed(2)}`, lx + 3, ly + 12 * k);  // parallel runways: one line each
+    });
     // Runways: threshold to the far end, at least 3 px wide.
     g.strokeStyle = '#e8e8e8';
     for (const r of m.runways) {
