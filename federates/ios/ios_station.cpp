@@ -10,6 +10,7 @@
 #include "ios/model/command_tracker.hpp"
 #include "ios/model/live_fields.hpp"
 #include "ios/model/map_layers.hpp"
+#include "ios/station_ports.hpp"
 #include "tools/topic/typed_flattener.hpp"
 
 #include <nlohmann/json.hpp>
@@ -231,21 +232,18 @@ class Station {
   }
 
   void subscribe(runtime::Federate& federate) {
-    namespace t = runtime::topics;
-    tap(federate, t::aircraft_state);
-    tap(federate, t::engine_state);
-    tap(federate, t::navigation_state);
-    tap(federate, t::autopilot_state);
-    tap(federate, t::motion_state);
-    tap(federate, t::control_loading_state);
-    tap(federate, t::visual_status);
-    tap(federate, t::pilot_controls);
+    for (const StationRead& read : kStationReads) {
+      if (read.topic == runtime::topics::visual_picture.name()) {
+        taps_.push_back(std::make_shared<runtime::Subscription<msg::VisualPicture>>(
+            federate.dds(), runtime::topics::visual_picture, read.qos,
+            [this](const msg::VisualPicture& p, const auto&) { note_picture(p); }));
+        continue;
+      }
+      runtime::topics::visit(read.topic, [&](const auto& topic) { tap(federate, topic); });
+    }
     taps_.push_back(std::make_shared<runtime::Subscription<msg::FederateStatus>>(
-        federate.dds(), t::federate_status, runtime::qos::kStatus,
+        federate.dds(), runtime::topics::federate_status, runtime::qos::kStatus,
         [this](const msg::FederateStatus& s, const auto&) { note_status(s); }));
-    taps_.push_back(std::make_shared<runtime::Subscription<msg::VisualPicture>>(
-        federate.dds(), t::visual_picture, runtime::qos::kPicture,
-        [this](const msg::VisualPicture& p, const auto&) { note_picture(p); }));
   }
 
   // The frame thread only stores the tick (no lock: a push being built never holds a frame).

@@ -4,6 +4,7 @@
 #include "common/util/config_node.hpp"
 #include "fedsim/in_process.hpp"
 #include "fedsim/launcher.hpp"
+#include "ios/station_ports.hpp"
 
 #include <fastrtps/attributes/PublisherAttributes.h>
 #include <fastrtps/attributes/SubscriberAttributes.h>
@@ -45,6 +46,17 @@ GraphNode recorder_node(const FederateSpec& f, const std::vector<std::string>& a
     if (!t.empty()) node.ports.push_back({t, runtime::PortDirection::kRead, kWritersQos, true});
   }
   node.ports_known = true;
+  return node;
+}
+
+/// The instructor station reads the state topics (without holding a frame) and the pictures.
+GraphNode station_node(const FederateSpec& f) {
+  GraphNode node{f.name, "fedsim-ios", {}, true};
+  for (const ios::StationRead& read : ios::kStationReads) {
+    GraphNode::Port port{std::string(read.topic), runtime::PortDirection::kRead, std::string(read.qos), false};
+    port.monitor = true;
+    node.ports.push_back(port);
+  }
   return node;
 }
 
@@ -190,7 +202,8 @@ DataFlowGraph build_graph(const Deployment& d, const std::map<std::string, std::
     std::vector<std::string> args;
     for (const auto& a : f.args) args.push_back(substitute(a, vars));
     const std::string binary = fs::path(f.binary).filename().string();
-    graph.nodes.push_back(binary == "fedsim" ? recorder_node(f, args)
+    graph.nodes.push_back(binary == "fedsim-ios" ? station_node(f)
+                          : binary == "fedsim" ? recorder_node(f, args)
                                              : component_node(f, args, d.file));
   }
   const QosProfiles qos(substitute(d.qos_file, vars));
