@@ -44,7 +44,7 @@ TEST(Graph, ShippedDeploymentsHaveNoProblems) {
   EXPECT_GE(checked, 2);
 }
 
-TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderAndRecorder) {
+TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
   const std::string path = std::string(FEDSIM_SOURCE_DIR) + "/deploy/default.yaml";
   const DataFlowGraph graph =
       build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
@@ -53,10 +53,10 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderAndRecorder) {
             std::string::npos)
       << dot;
   EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
-  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, visual, recorder"),
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, visual, ios, recorder"),
             std::string::npos)
       << graph_text(graph);
-  EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> recorder"), std::string::npos);
+  EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> ios, recorder"), std::string::npos);
   // The loader's autopilot input is a monitor: without an autopilot it is a note, not a problem.
   EXPECT_TRUE(graph.problems.empty());
   EXPECT_NE(std::find(graph.notes.begin(), graph.notes.end(),
