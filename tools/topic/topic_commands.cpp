@@ -1,6 +1,7 @@
 #include "tools/topic/topic_commands.hpp"
 #include "common/util/cli_checks.hpp"
 
+#include "tools/topic/topic_replay.hpp"
 #include "tools/topic/topic_tools.hpp"
 
 #include "common/runtime/federate_options.hpp"
@@ -109,6 +110,7 @@ void add_topic_commands(CLI::App& app) {
   add_echo(*topic);
   add_hz(*topic);
   add_record(app);
+  add_replay_command(app);
 }
 
 }  // namespace fedsim::tools
