@@ -49,6 +49,9 @@ const Topic<msg::PilotControls> pilot_controls =
 const Topic<msg::AircraftState> aircraft_state =
     frame_topic<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, qos::kState, true,
                               "position, velocity, attitude, rates, air data of each aircraft");
+const Topic<msg::AircraftState> replay_state = topic<msg::AircraftState>(
+    msg::TOPIC_REPLAY_STATE, qos::kState, false,
+    "a recorded aircraft state played back: the flight federate shows it while it arrives");
 const Topic<msg::EngineState> engine_state = frame_topic<msg::EngineState>(
     msg::TOPIC_ENGINE_STATE, qos::kState, true, "each engine's thrust, speeds, temperatures");
 const Topic<msg::NavigationState> navigation_state = frame_topic<msg::NavigationState>(
@@ -71,7 +74,7 @@ const std::vector<const TopicInfo*>& all() {
       &frame_tick.info,     &frame_done.info,       &sim_command.info,
       &federate_status.info, &pilot_controls.info,  &aircraft_state.info,
       &engine_state.info,   &navigation_state.info, &autopilot_state.info, &motion_state.info,
-      &control_loading_state.info, &visual_status.info, &visual_picture.info};
+      &control_loading_state.info, &visual_status.info, &visual_picture.info, &replay_state.info};
   return every;
 }
 

@@ -65,6 +65,7 @@ extern const Topic<msg::MotionPlatformState> motion_state;
 extern const Topic<msg::ControlLoadingState> control_loading_state;
 extern const Topic<msg::VisualChannelStatus> visual_status;
 extern const Topic<msg::VisualPicture> visual_picture;
+extern const Topic<msg::AircraftState> replay_state;
 
 /// Every topic above, in this order.
 const std::vector<const TopicInfo*>& all();
@@ -85,7 +86,8 @@ bool visit(std::string_view name, Visitor&& visitor) {
   return try_one(frame_tick) || try_one(frame_done) || try_one(sim_command) ||
          try_one(federate_status) || try_one(pilot_controls) || try_one(aircraft_state) ||
          try_one(engine_state) || try_one(navigation_state) || try_one(autopilot_state) || try_one(motion_state) ||
-         try_one(control_loading_state) || try_one(visual_status) || try_one(visual_picture);
+         try_one(control_loading_state) || try_one(visual_status) || try_one(visual_picture) ||
+         try_one(replay_state);
 }
 }  // namespace topics
 

@@ -7,6 +7,7 @@ FlightComponent::FlightComponent(std::string name, FlightSetup setup, std::strin
       pilot_controls_(reads(runtime::topics::pilot_controls)),
       aircraft_state_(writes(runtime::topics::aircraft_state, state_qos)),
       engine_state_(writes(runtime::topics::engine_state)),
+      replay_state_(monitors(runtime::topics::replay_state)),
       setup_(std::move(setup)),
       trim_base_(setup_.start.controls) {
   state_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
@@ -154,8 +155,30 @@ void FlightComponent::fly_autopilot(const runtime::FrameContext& frame) {
   if (out.autothrottle_engaged) trim_base_.set_throttle(out.throttle);
 }
 
+bool FlightComponent::follow_replay(const runtime::FrameContext& frame) {
+  std::string problem;
+  const auto event = playback_.update(replay_state_.updates(), replay_state_.latest(), problem);
+  if (!problem.empty()) {
+    report_fault("input_rejected", "fedsim/replay_state: " + problem + " is not finite or out of range (sample not flown)");
+  }
+  if (event == ReplayPlayback::Event::kStarted) {
+    log().info("replay: the aircraft state follows fedsim/replay_state (frame {})", frame.frame);
+  } else if (event == ReplayPlayback::Event::kEnded) {
+    // Take control from here: the model flies on from the last replayed state.
+    setup_.model->set_state(state_from_replay(playback_.last()));
+    log().info("replay ended after {} samples: taking control at {:.6f} {:.6f} deg, {:.0f} m (frame {})",
+               playback_.samples(), playback_.last().latitude_rad() * 180.0 / M_PI,
+               playback_.last().longitude_rad() * 180.0 / M_PI, playback_.last().altitude_msl_m(), frame.frame);
+  }
+  return playback_.active();
+}
+
 void FlightComponent::step(const runtime::FrameContext& frame) {
   AircraftModel& model = *setup_.model;
+  if (follow_replay(frame)) {
+    write_state(frame);
+    return;
+  }
   if (frame.resetting()) {
     model.reset(setup_.start.initial, setup_.start.controls);
     trim_base_ = setup_.start.controls;
@@ -183,7 +206,12 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
 }
 
 void FlightComponent::write_state(const runtime::FrameContext& frame) {
-  fill_aircraft_state(setup_.model->outputs(), setup_.model->controls(), state_);
+  if (playback_.active()) {
+    state_ = playback_.last();  // the replay, as this aircraft's state of this frame
+    state_.aircraft_id(static_cast<std::uint16_t>(setup_.aircraft_id));
+  } else {
+    fill_aircraft_state(setup_.model->outputs(), setup_.model->controls(), state_);
+  }
   state_.stamp(frame.end_stamp());  // the state after this frame's step
   aircraft_state_.write(state_);
   const auto& engines = setup_.model->outputs().engines;

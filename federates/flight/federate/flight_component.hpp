@@ -16,6 +16,8 @@
 // pilot's; every mode change is logged; fedsim/autopilot_state carries the FMA every frame.
 #pragma once
 
+#include "flight/federate/replay_playback.hpp"
+
 #include "common/airports/runway_table.hpp"
 #include "common/runtime/component.hpp"
 #include "flight/federate/autopilot_adapter.hpp"
@@ -60,6 +62,9 @@ class FlightComponent final : public runtime::Component {
   void log_transition(const afcs::ModeTransition& t);
   bool apply_autopilot_failure(const msg::SimCommand& command);
   void write_state(const runtime::FrameContext& frame);
+  /// The replay: true while it drives the aircraft state this frame (the model waits);
+  /// takes control from its last sample when it ends.
+  bool follow_replay(const runtime::FrameContext& frame);
 
   // ---- Ports -------------------------------------------------------------------------------
   // reads  fedsim/pilot_controls: lockstep input, frame N flies the controls of frame N-1.
@@ -68,6 +73,9 @@ class FlightComponent final : public runtime::Component {
   runtime::Output<msg::AircraftState>& aircraft_state_;
   // writes fedsim/engine_state every frame, one sample (instance) per engine.
   runtime::Output<msg::EngineState>& engine_state_;
+  // reads  fedsim/replay_state (a monitor): a replay's aircraft states, written as this
+  //        federate's own while they arrive (replay_playback.hpp).
+  runtime::Input<msg::AircraftState>& replay_state_;
   // With the autopilot only (nullptr otherwise):
   // reads  fedsim/navigation_state: lockstep input, NAV1's ILS readings of frame N-1.
   runtime::Input<msg::NavigationState>* navigation_state_ = nullptr;
@@ -83,6 +91,7 @@ class FlightComponent final : public runtime::Component {
   std::uint64_t dropped_steps_seen_ = 0;
   msg::AircraftState state_;
   msg::EngineState engine_;
+  ReplayPlayback playback_;
 
   // The hosted AFCS (built in the first RUN frame, at the federation's frame period).
   std::unique_ptr<afcs::Afcs> afcs_;
