@@ -1,8 +1,12 @@
 // The motion platform's parameters from a YAML file (data/motion/README.md documents the keys;
-// data/motion/washout.yaml is the default tuning, the same numbers as the structs' defaults).
-// Every key is optional (the default stays), unknown keys are refused, numbers are range-checked
-// on read and the whole set is validated for the frame period: a bad file is a
-// util::ConfigError naming file, line and field, before anything moves.
+// data/motion/washout.yaml is the default tuning and platform, the same numbers as the structs'
+// defaults and typical_60_inch_design()): washout, platform, geometry (the symmetric design of
+// stewart_geometry.hpp) and actuator (the jacks). Every key is optional (the default stays; no
+// geometry section = the built-in design), unknown keys are refused, numbers are range-checked
+// on read, then the fields that depend on each other (the neutral pose, through the inverse
+// kinematics, inside the jacks' soft limits; the servo against the actuator rate; the engage
+// and park speeds against the velocity limit) and the whole set for the frame period: a bad
+// file is a util::ConfigError naming file, line and field, before anything moves.
 #pragma once
 
 #include "common/util/config_node.hpp"

@@ -34,19 +34,26 @@ void validate_design(const SymmetricStewartDesign& d) {
   require_positive(kDesign, "top_half_separation_rad", d.top_half_separation_rad);
   require_positive(kDesign, "min_length_m", d.min_length_m);
   require_positive(kDesign, "stroke_m", d.stroke_m);
+  control::require_non_negative(kDesign, "neutral_height_m", d.neutral_height_m);
   const double max_half_separation_rad = units::kPi / 6.0;
   if (d.base_half_separation_rad >= max_half_separation_rad ||
       d.top_half_separation_rad >= max_half_separation_rad) {
     throw std::invalid_argument(std::string(kDesign) +
                                 ": half separations must be below 30 deg (pairs would overlap)");
   }
-  if (!(horizontal_span_m(d) < half_stroke_length_m(d))) {
+}
+
+// The height at which every jack is at mid-stroke; none when the jacks cannot span the gap.
+double mid_stroke_height_m(const SymmetricStewartDesign& d) {
+  const double length_m = half_stroke_length_m(d);
+  const double span_m = horizontal_span_m(d);
+  if (!(span_m < length_m)) {
     std::ostringstream message;
-    message << kDesign << ": the horizontal span of a jack (" << horizontal_span_m(d)
-            << " m) must be shorter than its mid-stroke length (" << half_stroke_length_m(d)
-            << " m)";
+    message << kDesign << ": the horizontal span of a jack (" << span_m
+            << " m) must be shorter than its mid-stroke length (" << length_m << " m)";
     throw std::invalid_argument(message.str());
   }
+  return std::sqrt(length_m * length_m - span_m * span_m);
 }
 
 Eigen::Vector3d on_circle(double radius_m, double azimuth_rad, double z_m) {
@@ -68,12 +75,17 @@ SymmetricStewartDesign typical_60_inch_design() {
 
 double neutral_height_m(const SymmetricStewartDesign& design) {
   validate_design(design);
-  const double length_m = half_stroke_length_m(design);
-  const double span_m = horizontal_span_m(design);
-  return std::sqrt(length_m * length_m - span_m * span_m);
+  if (design.neutral_height_m > 0.0) return design.neutral_height_m;
+  return mid_stroke_height_m(design);
 }
 
-StewartGeometry make_symmetric_geometry(const SymmetricStewartDesign& d) {
+StewartGeometry make_symmetric_geometry(const SymmetricStewartDesign& design) {
+  StewartGeometry geometry = place_symmetric_joints(design);
+  validate(geometry);
+  return geometry;
+}
+
+StewartGeometry place_symmetric_joints(const SymmetricStewartDesign& d) {
   const double height_m = neutral_height_m(d);
   StewartGeometry geometry;
   const double pair_spacing_rad = 2.0 * units::kPi / 3.0;
@@ -92,7 +104,6 @@ StewartGeometry make_symmetric_geometry(const SymmetricStewartDesign& d) {
   }
   geometry.min_length_m = d.min_length_m;
   geometry.max_length_m = d.min_length_m + d.stroke_m;
-  validate(geometry);
   return geometry;
 }
 

@@ -13,7 +13,8 @@
 // base_half_separation to the upper joint at 120k - 60 deg + top_half_separation, jack 2k+1 from
 // 120k deg + base_half_separation to 120k + 60 deg - top_half_separation, so every jack spans the
 // same azimuth difference 60 deg - (base + top half separations) and all six have the same
-// length at neutral. The neutral height is chosen so that they are at mid-stroke there.
+// length at neutral. The neutral height is chosen so that they are at mid-stroke there, unless
+// the design names one (neutral_height_m > 0: a platform whose neutral sits off mid-stroke).
 #pragma once
 
 #include <Eigen/Core>
@@ -40,6 +41,7 @@ struct SymmetricStewartDesign {
   double top_half_separation_rad = 0.0;  // half the azimuth between an upper pair's joints [rad]
   double min_length_m = 0.0;             // retracted length, joint to joint [m]
   double stroke_m = 0.0;                 // max length - min length [m]
+  double neutral_height_m = 0.0;  // MRP above the base joints at neutral [m]; 0: mid-stroke
 };
 
 /// The figures of a typical 60-inch (1.524 m) stroke six-jack flight-simulator platform (a
@@ -51,15 +53,22 @@ struct SymmetricStewartDesign {
 SymmetricStewartDesign typical_60_inch_design();
 
 /// The geometry of a symmetric design; std::invalid_argument naming the field when a figure is
-/// not finite, not positive, a half separation is outside (0, 30 deg), or the jacks would not
-/// reach (the horizontal span of a jack must be shorter than its mid-stroke length).
+/// not finite, not positive, a half separation is outside (0, 30 deg), the jacks would not
+/// reach (the horizontal span of a jack must be shorter than its mid-stroke length) or, with a
+/// named neutral height, a jack is outside its stroke at neutral.
 StewartGeometry make_symmetric_geometry(const SymmetricStewartDesign& design);
+
+/// The joints of a symmetric design, the design's figures checked but not the stroke at
+/// neutral: for a loader that computes the neutral jack lengths itself to say which field puts
+/// them out of reach. make_symmetric_geometry is this plus validate().
+StewartGeometry place_symmetric_joints(const SymmetricStewartDesign& design);
 
 /// Checks a geometry (finite joints, 0 < min_length_m < max_length_m, the neutral lengths
 /// inside the stroke); std::invalid_argument naming what is wrong.
 void validate(const StewartGeometry& geometry);
 
-/// Height of the MRP above the base joints at neutral for a symmetric design [m].
+/// Height of the MRP above the base joints at neutral for a symmetric design [m]: the design's
+/// neutral_height_m when set, else the height that puts every jack at mid-stroke.
 double neutral_height_m(const SymmetricStewartDesign& design);
 
 }  // namespace fedsim::motion

@@ -58,11 +58,15 @@ StewartKinematics::StewartKinematics(const StewartGeometry& geometry) : geometry
 
 JackArray StewartKinematics::inverse(const PlatformPose& pose) const {
   require_finite_pose(pose);
+  return jack_lengths_m(geometry_, pose);
+}
+
+JackArray jack_lengths_m(const StewartGeometry& geometry, const PlatformPose& pose) {
   const Eigen::Matrix3d i_from_p = dcm_from_euler(pose.attitude);
   JackArray lengths_m{};
   for (int k = 0; k < kJackCount; ++k) {
     const Eigen::Vector3d jack_i_m =
-        pose.position_i_m + i_from_p * geometry_.top_joints_p_m[k] - geometry_.base_joints_i_m[k];
+        pose.position_i_m + i_from_p * geometry.top_joints_p_m[k] - geometry.base_joints_i_m[k];
     lengths_m[k] = jack_i_m.norm();
   }
   return lengths_m;

@@ -52,6 +52,10 @@ class StewartKinematics {
   JackArray neutral_lengths_m_;
 };
 
+/// The closed-form inverse kinematics on any geometry, its stroke not consulted: what
+/// StewartKinematics::inverse computes, for checking a geometry before it is accepted.
+JackArray jack_lengths_m(const StewartGeometry& geometry, const PlatformPose& pose);
+
 /// True when every length lies in [lower_m, upper_m].
 bool within(const JackArray& lengths_m, double lower_m, double upper_m);
 

@@ -26,6 +26,7 @@ WashoutInput level_flight() { return WashoutInput{{0.0, 0.0, -kG}, Eigen::Vector
 struct StepRun {
   double first_cue_mps2 = 0.0;  // delivered specific force x in the first frame
   double peak_surge_m = 0.0;
+  double peak_time_s = 0.0;  // when |x| peaked
   double final_surge_m = 0.0;
   double final_pitch_rad = 0.0;
   double max_pitch_rate_radps = 0.0;
@@ -46,7 +47,10 @@ StepRun run_surge_step(const ClassicalWashoutParameters& p, double a_mps2, doubl
     const WashoutOutput out = washout.step(input);
     if (n == 0) run.first_cue_mps2 = out.specific_force_cue_p_mps2.x();
     surge.push_back(out.pose.position_i_m.x());
-    run.peak_surge_m = std::max(run.peak_surge_m, std::abs(out.pose.position_i_m.x()));
+    if (std::abs(out.pose.position_i_m.x()) > run.peak_surge_m) {
+      run.peak_surge_m = std::abs(out.pose.position_i_m.x());
+      run.peak_time_s = (n + 1) * kDt;
+    }
     run.max_pitch_rate_radps = std::max(
         run.max_pitch_rate_radps, std::abs(out.pose.attitude.theta_rad - previous_pitch) / kDt);
     previous_pitch = out.pose.attitude.theta_rad;
@@ -63,6 +67,52 @@ StepRun run_surge_step(const ClassicalWashoutParameters& p, double a_mps2, doubl
   return run;
 }
 
+// What "washes out to neutral within the filter's time constant" can honestly mean for the surge
+// chain x/a = K s / ((s^2 + 2 zeta wn s + wn^2)(s + wb)). Its slowest pole is the first-order
+// washout's, tau_b = 1/wb (3.3 s as tuned); the second-order stage decays with tau_n, 1/(zeta wn)
+// when not overdamped (0.5 s). After its peak the displacement is governed by tau_b, and a
+// first-order decay still holds 37 % after one time constant: reaching 5 % of the peak takes
+// ln(1/0.05) = 3.0 tau_b for that pole alone. So the "within the time constant" is read
+// as "within N time constants of the slowest pole", N from the poles: ln 20 + 2 tau_n / tau_b.
+// The second term: the second-order stage holds the response above the slow pole's asymptote a
+// little longer, about 1.5 tau_n (1.3 to 1.7 tau_n for wn 1..4 rad/s, wb 0.1..0.5 rad/s, with
+// and without tilt, in a continuous-time simulation of the chain); 2 tau_n is allowed. Counted
+// from the peak, not the step: the peak comes only once the input stops changing (with tilt
+// coordination the cab tilts in at its rate limit for asin(a/g)/rate, and the gravity it tilts
+// into is an input to this chain), which is the tilt's time, not the filter's.
+double slowest_second_order_decay_radps(double natural_frequency_radps, double damping_ratio) {
+  if (damping_ratio <= 1.0) return damping_ratio * natural_frequency_radps;
+  return natural_frequency_radps * (damping_ratio - std::sqrt(damping_ratio * damping_ratio - 1.0));
+}
+
+struct WashoutBound {
+  double tau_b_s = 0.0;  // the washout's time constant 1/wb [s]
+  double tau_n_s = 0.0;  // the second-order stage's slowest decay [s]
+  double time_constants() const { return std::log(1.0 / 0.05) + 2.0 * tau_n_s / tau_b_s; }
+  double after_peak_s() const { return time_constants() * tau_b_s; }
+};
+
+WashoutBound surge_washout_bound(const ClassicalWashoutParameters& p) {
+  const TranslationalChannelParameters& x = p.translational[0];
+  return {1.0 / x.break_frequency_radps,
+          1.0 / slowest_second_order_decay_radps(x.natural_frequency_radps, x.damping_ratio)};
+}
+
+void expect_washout_within_bound(const ClassicalWashoutParameters& p, const StepRun& run,
+                                 const char* label) {
+  const WashoutBound bound = surge_washout_bound(p);
+  const double after_peak_s = run.time_to_5pct_s - run.peak_time_s;
+  EXPECT_GT(run.time_to_5pct_s, 0.0) << label;  // it did go out and come back
+  EXPECT_LE(after_peak_s, bound.after_peak_s()) << label;
+  std::printf(
+      "[figure] %s: peak %.3f m at %.2f s, |x| < 5%% of peak from %.2f s: %.2f s after the peak "
+      "= %.2f tau_b (tau_b %.2f s, tau_n %.2f s); bound N = ln 20 + 2 tau_n/tau_b = %.2f tau_b "
+      "= %.2f s\n",
+      label, run.peak_surge_m, run.peak_time_s, run.time_to_5pct_s, after_peak_s,
+      after_peak_s / bound.tau_b_s, bound.tau_b_s, bound.tau_n_s, bound.time_constants(),
+      bound.after_peak_s());
+}
+
 TEST(ClassicalWashout, SustainedSurgeGivesOnsetCueWashoutAndTiltAtTheRateLimit) {
   const ClassicalWashoutParameters p;
   const double a = 2.0;
@@ -71,9 +121,10 @@ TEST(ClassicalWashout, SustainedSurgeGivesOnsetCueWashoutAndTiltAtTheRateLimit) 
   // step in its first sample at 60 Hz).
   EXPECT_GT(run.first_cue_mps2, 0.95 * p.translational[0].gain * a);
   EXPECT_GT(run.peak_surge_m, 0.05);
-  // Washout: back to neutral (third-order high-pass: no residual displacement).
+  // Washout: back to neutral (third-order high-pass: no residual displacement), within the
+  // time constants of the chain's slowest pole (surge_washout_bound above).
   EXPECT_LT(std::abs(run.final_surge_m), 1e-4);
-  EXPECT_LT(run.time_to_5pct_s, 30.0);
+  expect_washout_within_bound(p, run, "2 m/s^2 surge step with tilt");
   // Tilt coordination: the cab settles at asin(a/g) and never tilts faster than 3 deg/s.
   EXPECT_NEAR(run.final_pitch_rad, std::asin(p.tilt.gain * a / kG), 1e-6);
   EXPECT_LE(run.max_pitch_rate_radps, p.tilt.rate_limit_radps * (1.0 + 1e-9));
@@ -95,6 +146,8 @@ TEST(ClassicalWashout, WithoutTiltCoordinationNoSustainedTiltOrCue) {
   EXPECT_LT(std::abs(run.final_surge_m), 1e-4);
   EXPECT_NEAR(run.final_cue_x_mps2, 0.0, 1e-4);  // the onset only: the cue washes out
   EXPECT_GT(run.first_cue_mps2, 0.95 * p.translational[0].gain * 2.0);
+  // The bare chain (no tilt feeding it): the same bound holds.
+  expect_washout_within_bound(p, run, "2 m/s^2 surge step without tilt");
 }
 
 TEST(ClassicalWashout, SustainedLateralForceRollsTheCabTheRightWay) {

@@ -227,6 +227,12 @@ TEST(StewartKinematics, RejectsBadGeometryAndPoses) {
   d = typical_60_inch_design();
   d.base_radius_m = 6.0;  // the jacks cannot reach across
   EXPECT_THROW(make_symmetric_geometry(d), std::invalid_argument);
+  d = typical_60_inch_design();
+  d.neutral_height_m = 1.5;  // a named neutral below the retracted jacks' reach
+  EXPECT_THROW(make_symmetric_geometry(d), std::invalid_argument);
+  EXPECT_NO_THROW(place_symmetric_joints(d));  // the joints alone, for a loader to diagnose
+  d.neutral_height_m = 2.5;  // inside the stroke: accepted, at that height
+  EXPECT_EQ(make_symmetric_geometry(d).base_joints_i_m[0].z(), 2.5);
   const StewartKinematics k = typical();
   PlatformPose bad;
   bad.attitude.phi_rad = std::nan("");
