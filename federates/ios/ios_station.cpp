@@ -11,6 +11,7 @@
 #include "ios/model/live_fields.hpp"
 #include "ios/model/map_layers.hpp"
 #include "ios/station_ports.hpp"
+#include "ios/station_replay.hpp"
 #include "tools/topic/typed_flattener.hpp"
 
 #include <nlohmann/json.hpp>
@@ -141,7 +142,8 @@ std::string settings_key(const msg::SimCommand& c) {
 }
 
 /// The whole live picture as one JSON text (what every push carries).
-std::string state_message(Shared& s, double now_s, const ServerStatistics& server, double push_hz) {
+std::string state_message(Shared& s, double now_s, const ServerStatistics& server, double push_hz,
+                          const StationReplay* replay) {
   json out;
   out["type"] = "state";
   out["wall_s"] = now_s;
@@ -174,6 +176,7 @@ std::string state_message(Shared& s, double now_s, const ServerStatistics& serve
   }
   out["commands"] = commands;
   out["settings"] = s.settings;
+  if (replay) out["replay"] = replay->state(now_s);
   const double span = s.last_push_s - s.first_push_s;
   out["server"] = {{"clients", server.clients}, {"pushes", s.pushes}, {"push_hz", push_hz},
                    {"push_hz_measured", s.pushes > 1 && span > 0 ? (s.pushes - 1) / span : 0.0},
@@ -200,6 +203,7 @@ class Station {
     runtime::Federate federate(options_.federate);
     federate_ = &federate;
     subscribe(federate);
+    replay_ = std::make_unique<StationReplay>(federate.dds(), options_.ring_minutes * 60.0, options_.recordings);
     auto& commands = federate.publish(runtime::topics::sim_command, runtime::qos::kCommand);
     commands_ = &commands;
     federate.on_command([this](const msg::SimCommand& c) { note_setting(c); });
@@ -213,6 +217,7 @@ class Station {
       commands_ = nullptr;  // the page can no longer send once the federate is gone
     }
     server_.stop();
+    replay_.reset();
     taps_.clear();
     print_summary();
     return rc;
@@ -319,7 +324,7 @@ class Station {
         if (shared_.pushes == 0) shared_.first_push_s = now;
         shared_.last_push_s = now;
         ++shared_.pushes;
-        message = state_message(shared_, now, statistics, options_.push_hz);
+        message = state_message(shared_, now, statistics, options_.push_hz, replay_.get());
       }
       server_.broadcast(message);
     }
@@ -394,6 +399,25 @@ class Station {
       }
       return HttpResponse{404, "application/json", error_body("no picture from channel '" + channel + "' yet").dump()};
     });
+    server_.handle("POST", "/api/replay", [this](const HttpRequest& r) {
+      if (!replay_) return HttpResponse{503, "application/json", error_body("the station is not connected yet").dump()};
+      json body;
+      try {
+        body = json::parse(r.body);
+      } catch (const json::parse_error& e) {
+        return HttpResponse{400, "application/json", error_body(std::string("the request is not JSON: ") + e.what()).dump()};
+      }
+      try {
+        const json reply = replay_->request(body, clock_s());
+        if (federate_) federate_->log().info("replay from {}: {}", r.remote_address, body.dump());
+        return HttpResponse{200, "application/json", reply.dump()};
+      } catch (const std::invalid_argument& e) {
+        return HttpResponse{400, "application/json", error_body(e.what()).dump()};
+      }
+    });
+    server_.handle("GET", "/api/recordings", [this](const HttpRequest&) {
+      return HttpResponse{200, "application/json", json(replay_ ? replay_->recordings() : std::vector<std::string>{}).dump()};
+    });
     server_.handle("GET", "/api/config", [this](const HttpRequest&) {
       return HttpResponse{200, "application/json",
                           json{{"airport", options_.airport}, {"push_hz", options_.push_hz},
@@ -406,7 +430,7 @@ class Station {
     std::lock_guard lock(shared_.mutex);
     const double now = clock_s();
     copy_tick_locked(now);
-    return state_message(shared_, now, statistics, options_.push_hz);
+    return state_message(shared_, now, statistics, options_.push_hz, replay_.get());
   }
 
   void print_summary() {
@@ -435,6 +459,7 @@ class Station {
   std::mutex publish_mutex_;
   runtime::Publisher<msg::SimCommand>* commands_ = nullptr;
   std::vector<std::shared_ptr<void>> taps_;
+  std::unique_ptr<StationReplay> replay_;  // built once the federate's participant exists
   std::atomic<bool> stopping_{false};
   // The newest tick, as the frame thread left it.
   std::atomic<std::uint64_t> tick_frame_{0}, ticks_{0};

@@ -15,6 +15,8 @@
 //   GET  /api/map     runways, ILS feathers and navaids around ?airport= (navigation database)
 //   GET  /api/picture ?channel=<id>: the channel's newest JPEG
 //   POST /api/command a command as JSON (common/instructor/request_json.hpp)
+//   POST /api/replay  start (the ring's last N s, or a recording), pause, resume, seek, speed,
+//                     take control (station_replay.hpp)
 //
 // Threads: the frame thread only notes the tick; DDS listener threads flatten at most a few
 // samples a second per topic into the field registry (ios/model/live_fields) under a mutex;
@@ -37,6 +39,8 @@ struct StationOptions {
   std::string airport = "KSFO"; // the map's airport at start
   double map_radius_nm = 40.0;  // navaids shown within this radius of it
   std::string navdb_file;       // "" = the built database
+  double ring_minutes = 10.0;   // live aircraft state kept for "replay the last N minutes"
+  std::string recordings = "out";  // folders (fedsim record / fedsim run --out) the page may replay
 };
 
 /// Runs the station until SIGINT/SIGTERM, a SHUTDOWN command or --duration. Exit codes as every

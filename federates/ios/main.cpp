@@ -53,6 +53,11 @@ int main(int argc, char** argv) {
   app.add_option("--map-radius-nm", o.map_radius_nm, "navaids within this distance of the airport [NM]")
       ->check(util::FiniteRange(1.0, 200.0))
       ->capture_default_str();
+  app.add_option("--ring-minutes", o.ring_minutes, "live aircraft state kept for replay [min]")
+      ->check(util::FiniteRange(0.5, 120.0))
+      ->capture_default_str();
+  app.add_option("--recordings", o.recordings, "folder of recordings the page may replay (fedsim record / fedsim run --out)")
+      ->capture_default_str();
   app.add_option("--navdb", o.navdb_file, "navigation database (default: the one the build made)");
   app.add_option("--web-root", o.server.web_root, "folder of the page's files")->capture_default_str();
   try {
