@@ -203,7 +203,8 @@ class Station {
     runtime::Federate federate(options_.federate);
     federate_ = &federate;
     subscribe(federate);
-    replay_ = std::make_unique<StationReplay>(federate.dds(), options_.ring_minutes * 60.0, options_.recordings);
+    replay_ = std::make_unique<StationReplay>(federate.dds(), options_.ring_minutes * 60.0, options_.recordings,
+                                              [this] { return tick_frame_.load(); });
     auto& commands = federate.publish(runtime::topics::sim_command, runtime::qos::kCommand);
     commands_ = &commands;
     federate.on_command([this](const msg::SimCommand& c) { note_setting(c); });

@@ -66,8 +66,9 @@ class RowToTyped {
 
 }  // namespace
 
-StationReplay::StationReplay(std::shared_ptr<runtime::DdsParticipant> dds, double ring_s, fs::path recordings)
-    : recordings_(std::move(recordings)), ring_s_(ring_s) {
+StationReplay::StationReplay(std::shared_ptr<runtime::DdsParticipant> dds, double ring_s, fs::path recordings,
+                             std::function<std::uint64_t()> current_frame)
+    : recordings_(std::move(recordings)), ring_s_(ring_s), current_frame_(std::move(current_frame)) {
   writer_ = std::make_unique<runtime::Publisher<msg::AircraftState>>(dds, runtime::topics::replay_state);
   live_ = std::make_unique<runtime::Subscription<msg::AircraftState>>(
       dds, runtime::topics::aircraft_state, runtime::qos::kState,
@@ -240,7 +241,10 @@ void StationReplay::publish_loop() {
         ++published_;
       }
     }
-    if (send) writer_->publish(*send);
+    if (send) {
+      send->stamp().frame(current_frame_());
+      writer_->publish(*send);
+    }
   }
 }
 

@@ -22,6 +22,7 @@
 #include <atomic>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -35,7 +36,11 @@ class StationReplay {
  public:
   /// `ring_s`: how much live state the ring keeps [s]; `recordings`: the folder whose
   /// sub-folders (and itself) may be replayed.
-  StationReplay(std::shared_ptr<runtime::DdsParticipant> dds, double ring_s, std::filesystem::path recordings);
+  /// `current_frame`: the newest frame tick the station saw. Each replayed sample is stamped with
+  /// it, so that a reader that takes frame-stamped samples in order (the flight federate's port)
+  /// sees every one as new, wherever the recording's own frame numbers stood.
+  StationReplay(std::shared_ptr<runtime::DdsParticipant> dds, double ring_s, std::filesystem::path recordings,
+                std::function<std::uint64_t()> current_frame);
   ~StationReplay();
   StationReplay(const StationReplay&) = delete;
   StationReplay& operator=(const StationReplay&) = delete;
@@ -67,6 +72,7 @@ class StationReplay {
 
   std::filesystem::path recordings_;
   double ring_s_;
+  std::function<std::uint64_t()> current_frame_;
   mutable std::mutex mutex_;
   std::deque<Sample> ring_;
   std::vector<Sample> samples_;  // the replay's

@@ -129,7 +129,38 @@ try {
   await waitFor('running again', () => fedsim(() => window.fedsim.state.timing.run_state === 'run'));
   await page.selectOption('#plot-field', 'climb_rate_mps');
   await page.click('#plot-add');
-  await sleep(5000);
+  await sleep(6000);
+
+  // Replay the last 30 s of the live ring through the flight federate, pause it, take control.
+  const position = () => fedsim(() => {
+    const f = window.fedsim.state.topics['fedsim/aircraft_state'].f;
+    return { lat: f.latitude_rad * 180 / Math.PI, lon: f.longitude_rad * 180 / Math.PI, t: window.fedsim.state.wall_s };
+  });
+  const metres = (a, b) => Math.hypot((a.lat - b.lat) * 111320, (a.lon - b.lon) * 111320 * Math.cos(a.lat * Math.PI / 180));
+  const live = await position();
+  await page.selectOption('#replay-last', '30');
+  await page.click('#replay-ring');
+  await waitFor('the replay running', () => fedsim(() => window.fedsim.state.replay.active && window.fedsim.state.replay.playing));
+  await sleep(1000);
+  const replayed = await position();
+  check(metres(replayed, live) > 200, 'the replay shows the aircraft where it was', `${metres(replayed, live).toFixed(0)} m from where it is live`);
+  await sleep(1000);
+  const replayedLater = await position();
+  check(metres(replayedLater, replayed) > 20, 'the replay moves on (control)', `${metres(replayedLater, replayed).toFixed(0)} m in 1 s`);
+  await page.click('#replay-pause');
+  await waitFor('the replay paused', () => fedsim(() => !window.fedsim.state.replay.playing));
+  await sleep(300);
+  const paused1 = await position();
+  await sleep(1000);
+  const paused2 = await position();
+  check(metres(paused1, paused2) < 0.01, 'a paused replay holds the aircraft', `${metres(paused1, paused2).toFixed(3)} m in 1 s while the federation runs`);
+  await page.click('#replay-take');
+  await waitFor('control taken', () => fedsim(() => !window.fedsim.state.replay.active));
+  await sleep(1500);
+  const flown = await position();
+  const fromPause = metres(flown, paused2);
+  check(fromPause > 20 && fromPause < 250, 'taking control flies on from the replayed state', `${fromPause.toFixed(0)} m from it 1.5 s later`);
+  await sleep(2000);
   const stats = await fedsim(() => ({ fps: window.fedsim.stats.fps, push: window.fedsim.state.server.push_hz_measured,
                                       pushes: window.fedsim.pushes, hz: window.fedsim.state.server.push_hz }));
   console.log(`page frame rate ${stats.fps} fps; pushes ${stats.push.toFixed(2)}/s measured by the server ` +

@@ -61,6 +61,7 @@ function onState(s) {
   updateTables(s);
   updatePlotChoices(s);
   updatePicture(s);
+  updateReplay(s);
 }
 
 // ---- header and tables ----
@@ -139,6 +140,62 @@ function wireForms() {
     e.preventDefault();
     sendCommand({ command: 'time_of_day', utc: e.target.utc.value.trim(), lights: e.target.lights.checked });
   };
+}
+
+// ---- replay (seed 9.7) ----
+
+async function replayRequest(body) {
+  $('command-error').textContent = '';
+  const response = await fetch('api/replay', { method: 'POST', body: JSON.stringify(body) });
+  const reply = await response.json();
+  if (!response.ok) $('command-error').textContent = reply.error || ('HTTP ' + response.status);
+  return reply;
+}
+fedsim.replayRequest = replayRequest;
+
+async function loadRecordings() {
+  const names = await (await fetch('api/recordings')).json();
+  $('replay-recording').innerHTML = '<option value="">(a recording)</option>' +
+    names.map((n) => `<option>${esc(n)}</option>`).join('');
+}
+
+function updateReplay(s) {
+  const r = s.replay;
+  if (!r) return;
+  const seek = $('replay-seek');
+  if (r.active) {
+    seek.disabled = false;
+    seek.max = r.length_s.toFixed(1);
+    if (document.activeElement !== seek) seek.value = r.position_s.toFixed(1);
+    $('replay-pause').textContent = r.playing ? 'Pause' : 'Resume';
+    $('replay-status').innerHTML = `<span class="badge warn">REPLAY</span> ${esc(r.source)}: ` +
+      `${r.position_s.toFixed(1)} / ${r.length_s.toFixed(1)} s at ${r.speed}x${r.playing ? '' : ', paused'}` +
+      `${r.finished ? ', at the end (take control to fly on)' : ''}`;
+  } else {
+    seek.disabled = true;
+    $('replay-status').textContent = `live; ${r.ring_s.toFixed(0)} s of live state held for replay`;
+  }
+}
+
+function wireReplay() {
+  $('replay-ring').onclick = () => replayRequest({ action: 'start', source: 'ring', last_s: Number($('replay-last').value),
+                                                   speed: Number($('replay-speed').value) });
+  $('replay-recording-start').onclick = () => {
+    const name = $('replay-recording').value;
+    if (name) replayRequest({ action: 'start', source: 'recording', name, speed: Number($('replay-speed').value) });
+  };
+  $('replay-pause').onclick = () => {
+    const r = fedsim.state && fedsim.state.replay;
+    replayRequest({ action: r && r.playing ? 'pause' : 'resume' });
+  };
+  $('replay-speed').onchange = () => {
+    if (fedsim.state && fedsim.state.replay && fedsim.state.replay.active) {
+      replayRequest({ action: 'speed', speed: Number($('replay-speed').value) });
+    }
+  };
+  $('replay-seek').onchange = () => replayRequest({ action: 'seek', t_s: Number($('replay-seek').value) });
+  $('replay-take').onclick = () => replayRequest({ action: 'take_control' });
+  loadRecordings();
 }
 
 // ---- map (seed 9.6): equirectangular about the view centre, north up ----
@@ -494,6 +551,7 @@ function frame(now) {
 }
 
 wireForms();
+wireReplay();
 wireMap();
 wirePlots();
 addSeries('fedsim/aircraft_state', 'altitude_msl_m');
