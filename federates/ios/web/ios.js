@@ -173,6 +173,7 @@ function updateReplay(s) {
       `${r.finished ? ', at the end (take control to fly on)' : ''}`;
   } else {
     seek.disabled = true;
+    $('replay-pause').textContent = 'Pause';
     $('replay-status').textContent = `live; ${r.ring_s.toFixed(0)} s of live state held for replay`;
   }
 }
