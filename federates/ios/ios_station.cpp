@@ -176,7 +176,7 @@ std::string state_message(Shared& s, double now_s, const ServerStatistics& serve
   }
   out["commands"] = commands;
   out["settings"] = s.settings;
-  if (replay) out["replay"] = replay->state(now_s);
+  if (replay) out["replay"] = replay->state();
   const double span = s.last_push_s - s.first_push_s;
   out["server"] = {{"clients", server.clients}, {"pushes", s.pushes}, {"push_hz", push_hz},
                    {"push_hz_measured", s.pushes > 1 && span > 0 ? (s.pushes - 1) / span : 0.0},
@@ -409,7 +409,7 @@ class Station {
         return HttpResponse{400, "application/json", error_body(std::string("the request is not JSON: ") + e.what()).dump()};
       }
       try {
-        const json reply = replay_->request(body, clock_s());
+        const json reply = replay_->request(body);
         if (federate_) federate_->log().info("replay from {}: {}", r.remote_address, body.dump());
         return HttpResponse{200, "application/json", reply.dump()};
       } catch (const std::invalid_argument& e) {

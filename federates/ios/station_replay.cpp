@@ -141,7 +141,8 @@ std::vector<StationReplay::Sample> StationReplay::from_recording(const std::stri
   return out;
 }
 
-void StationReplay::start(std::vector<Sample> samples, const std::string& source, double speed, double now_s) {
+void StationReplay::start(std::vector<Sample> samples, const std::string& source, double speed) {
+  const double now_s = clock_s();
   std::vector<double> times;
   times.reserve(samples.size());
   for (const auto& s : samples) times.push_back(s.time_s);
@@ -155,7 +156,8 @@ void StationReplay::start(std::vector<Sample> samples, const std::string& source
   active_.store(true);
 }
 
-json StationReplay::request(const json& body, double now_s) {
+json StationReplay::request(const json& body) {
+  const double now_s = clock_s();
   if (!body.is_object() || !body.contains("action") || !body.at("action").is_string()) {
     throw std::invalid_argument("replay: a request needs \"action\": start, pause, resume, seek, speed or take_control");
   }
@@ -168,14 +170,14 @@ json StationReplay::request(const json& body, double now_s) {
       if (last_s <= 0.0 || last_s > ring_s_) {
         throw std::invalid_argument("replay: last_s must be within (0, " + std::to_string(static_cast<int>(ring_s_)) + "] s");
       }
-      start(from_ring(last_s), "the last " + std::to_string(static_cast<int>(last_s)) + " s", speed, now_s);
+      start(from_ring(last_s), "the last " + std::to_string(static_cast<int>(last_s)) + " s", speed);
     } else if (source == "recording") {
       const std::string name = body.value("name", std::string());
-      start(from_recording(name), "recording " + name, speed, now_s);
+      start(from_recording(name), "recording " + name, speed);
     } else {
       throw std::invalid_argument("replay: source '" + source + "': ring or recording");
     }
-    return state(now_s);
+    return state();
   }
   std::lock_guard lock(mutex_);
   if (action == "take_control") {
@@ -203,7 +205,8 @@ json StationReplay::request(const json& body, double now_s) {
   return out;
 }
 
-json StationReplay::state(double now_s) const {
+json StationReplay::state() const {
+  const double now_s = clock_s();
   std::lock_guard lock(mutex_);
   json out;
   out["active"] = active_.load() && clock_.has_value();

@@ -9,7 +9,8 @@
 //     motion all show it), and "take control from here": the replay stops and the flight
 //     federate flies on from the last replayed state.
 // Threads: the ring is fed on a DDS listener thread, the replay publishes from its own thread,
-// the page's requests come on the server's: every member is guarded.
+// the page's requests come on the server's: every member is guarded. Times are the monotonic
+// clock's, taken here.
 #pragma once
 
 #include "common/runtime/dds_participant.hpp"
@@ -50,10 +51,10 @@ class StationReplay {
   /// "resume" | {"action": "seek", "t_s": 42.0} | {"action": "speed", "speed": 4} |
   /// "take_control". Returns the replay's state, or throws std::invalid_argument naming the
   /// field.
-  nlohmann::json request(const nlohmann::json& body, double now_s);
+  nlohmann::json request(const nlohmann::json& body);
   /// {"active", "source", "playing", "speed", "position_s", "start_s", "end_s", "samples",
   ///  "ring_s" (live state held), "recordings": [names]}
-  nlohmann::json state(double now_s) const;
+  nlohmann::json state() const;
   /// The recordings that can be replayed (folder names relative to --recordings; "." itself).
   std::vector<std::string> recordings() const;
   /// Stops publishing (the flight federate then takes control) and joins the thread.
@@ -67,7 +68,7 @@ class StationReplay {
   void take_live(const msg::AircraftState& s);
   std::vector<Sample> from_ring(double last_s) const;
   std::vector<Sample> from_recording(const std::string& name) const;
-  void start(std::vector<Sample> samples, const std::string& source, double speed, double now_s);
+  void start(std::vector<Sample> samples, const std::string& source, double speed);
   void publish_loop();
 
   std::filesystem::path recordings_;
