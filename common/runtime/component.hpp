@@ -62,6 +62,7 @@ struct PortInfo {
   PortDirection direction = PortDirection::kRead;
   std::string qos;              // QoS profile this port uses
   bool lockstep_input = false;  // reads: frame N waits for the frame N-1 sample in lockstep
+  bool monitor = false;         // reads: declared by monitors(): optional, never holds a frame
 };
 
 template <class T>
@@ -217,7 +218,7 @@ class Component {
   /// Declares a read port that never holds the frame back (a monitor of a topic).
   template <class T>
   Input<T>& monitors(const Topic<T>& topic, std::string_view qos = {}) {
-    return add<Input<T>>(topic.info, PortDirection::kRead, qos, false);
+    return add<Input<T>>(topic.info, PortDirection::kRead, qos, false, true);
   }
   /// Declares a write port on a catalogue topic.
   template <class T>
@@ -230,8 +231,9 @@ class Component {
 
  private:
   template <class P>
-  P& add(const TopicInfo& topic, PortDirection direction, std::string_view qos, bool lockstep) {
-    PortInfo info{&topic, direction, qos.empty() ? topic.default_qos : std::string(qos), lockstep};
+  P& add(const TopicInfo& topic, PortDirection direction, std::string_view qos, bool lockstep,
+         bool monitor = false) {
+    PortInfo info{&topic, direction, qos.empty() ? topic.default_qos : std::string(qos), lockstep, monitor};
     auto port = std::make_unique<P>(std::move(info));
     P& ref = *port;
     ports_.push_back(std::move(port));

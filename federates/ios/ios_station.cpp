@@ -12,6 +12,8 @@
 #include "ios/model/map_layers.hpp"
 #include "ios/station_ports.hpp"
 #include "ios/station_replay.hpp"
+#include "common/scenario/scenario.hpp"
+#include "common/util/config_node.hpp"
 #include "tools/topic/typed_flattener.hpp"
 
 #include <nlohmann/json.hpp>
@@ -143,7 +145,7 @@ std::string settings_key(const msg::SimCommand& c) {
 
 /// The whole live picture as one JSON text (what every push carries).
 std::string state_message(Shared& s, double now_s, const ServerStatistics& server, double push_hz,
-                          const StationReplay* replay) {
+                          const StationReplay* replay, const json& scenario) {
   json out;
   out["type"] = "state";
   out["wall_s"] = now_s;
@@ -177,6 +179,7 @@ std::string state_message(Shared& s, double now_s, const ServerStatistics& serve
   out["commands"] = commands;
   out["settings"] = s.settings;
   if (replay) out["replay"] = replay->state();
+  out["scenario"] = scenario;
   const double span = s.last_push_s - s.first_push_s;
   out["server"] = {{"clients", server.clients}, {"pushes", s.pushes}, {"push_hz", push_hz},
                    {"push_hz_measured", s.pushes > 1 && span > 0 ? (s.pushes - 1) / span : 0.0},
@@ -260,6 +263,96 @@ class Station {
     tick_mode_.store(static_cast<int>(f.mode), std::memory_order_relaxed);
     tick_period_s_.store(f.frame_period_s, std::memory_order_relaxed);
     ticks_.fetch_add(1, std::memory_order_release);
+    if (scenario_running_.load()) run_scenario(f);
+  }
+
+  // ---- Scenarios from the page ----
+
+  std::filesystem::path scenario_dir() const {
+    return options_.scenarios.empty() ? std::filesystem::path(FEDSIM_DATA_DIR) / "scenarios"
+                                      : std::filesystem::path(options_.scenarios);
+  }
+
+  std::vector<std::string> scenario_files() const {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(scenario_dir(), ec)) {
+      if (e.path().extension() == ".yaml") names.push_back(e.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  /// One frame of the running scenario (frame thread). It never waits: when a push holds the
+  /// registry, this frame is skipped and a timed event fires in the next (its catch-up rule).
+  void run_scenario(const runtime::FrameContext& f) {
+    std::vector<scenario::Action> actions;
+    {
+      std::unique_lock scenario_lock(scenario_mutex_, std::try_to_lock);
+      if (!scenario_lock || !scenario_) return;
+      {
+        std::unique_lock lock(shared_.mutex, std::try_to_lock);
+        if (!lock) return;
+        scenario_->set_frame_period(f.frame_period_s);
+        actions = scenario_->step(f.sim_time_s, shared_.lookup());
+      }
+      char at[32];
+      std::snprintf(at, sizeof at, "t=%.2f s: ", f.sim_time_s);
+      for (const auto& a : actions) scenario_fired_.push_back(at + a.text);
+      if (scenario_->finished()) scenario_running_.store(false);
+    }
+    // Sent with no scenario lock held (send_request takes the registry's).
+    for (const auto& a : actions) {
+      if (a.kind == scenario::Action::Kind::kLog) {
+        if (federate_) federate_->log().info("scenario t={:.2f}s (line {}): {}", f.sim_time_s, a.line, a.text);
+        continue;
+      }
+      const instructor::InstructorRequest request =
+          a.kind == scenario::Action::Kind::kStop ? instructor::InstructorRequest(instructor::ShutdownRequest{}) : a.command;
+      send_request(request, "scenario line " + std::to_string(a.line));
+    }
+  }
+
+  HttpResponse scenario_request(const HttpRequest& r) {
+    json body;
+    try {
+      body = json::parse(r.body);
+    } catch (const json::parse_error& e) {
+      return {400, "application/json", error_body(std::string("the request is not JSON: ") + e.what()).dump()};
+    }
+    const std::string action = body.value("action", std::string());
+    std::lock_guard lock(scenario_mutex_);
+    if (action == "stop") {
+      scenario_running_.store(false);
+      scenario_.reset();
+      return {200, "application/json", json{{"running", false}}.dump()};
+    }
+    if (action != "start") return {400, "application/json", error_body("scenario: action start or stop").dump()};
+    const std::string name = body.value("name", std::string());
+    const auto files = scenario_files();
+    if (std::find(files.begin(), files.end(), name) == files.end()) {
+      return {400, "application/json", error_body("scenario: no file '" + name + "' in " + scenario_dir().string()).dump()};
+    }
+    try {
+      scenario_ = scenario::Scenario::load_file((scenario_dir() / name).string());
+    } catch (const std::exception& e) {
+      return {400, "application/json", error_body(e.what()).dump()};  // file:line: field: problem
+    }
+    scenario_name_ = name;
+    scenario_fired_.clear();
+    scenario_running_.store(true);
+    if (federate_) federate_->log().info("scenario {} started from {}", name, r.remote_address);
+    return {200, "application/json", json{{"running", true}, {"name", name}}.dump()};
+  }
+
+  json scenario_state() {
+    std::lock_guard lock(scenario_mutex_);
+    json out{{"running", scenario_running_.load()}, {"name", scenario_name_}, {"files", scenario_files()}};
+    const std::size_t n = scenario_fired_.size();
+    out["fired"] = std::vector<std::string>(scenario_fired_.begin() + static_cast<long>(n > 12 ? n - 12 : 0),
+                                            scenario_fired_.end());
+    if (scenario_) out["waiting_for"] = scenario_->missing_fields();
+    return out;
   }
 
   /// The station's "timing" view in the registry, from the newest tick (under shared_.mutex).
@@ -315,6 +408,7 @@ class Station {
       if (stopping_.load()) break;
       std::string message;
       const ServerStatistics statistics = server_.statistics();  // before shared_.mutex: one lock order
+      const json scenario = scenario_state();                   // likewise
       {
         std::lock_guard lock(shared_.mutex);
         const double now = clock_s();
@@ -325,10 +419,33 @@ class Station {
         if (shared_.pushes == 0) shared_.first_push_s = now;
         shared_.last_push_s = now;
         ++shared_.pushes;
-        message = state_message(shared_, now, statistics, options_.push_hz, replay_.get());
+        message = state_message(shared_, now, statistics, options_.push_hz, replay_.get(), scenario);
       }
       server_.broadcast(message);
     }
+  }
+
+  /// Publishes `command` (tracked until the federation confirms it); false if not connected.
+  /// Takes shared_.mutex: the caller must not hold it.
+  bool send_request(const instructor::InstructorRequest& command, const std::string& from,
+                    std::optional<ExpectedPosition> expected = std::nullopt, std::uint32_t* sequence_out = nullptr) {
+    msg::SimCommand sample = runtime::to_sim_command(command);
+    sample.issuer(options_.federate.name);
+    std::uint32_t sequence = 0;
+    {
+      std::lock_guard lock(shared_.mutex);
+      copy_tick_locked(clock_s());
+      sequence = shared_.next_sequence++;
+      shared_.tracker.sent(sequence, command, clock_s(), shared_.lookup(), expected);
+    }
+    sample.sequence_number(sequence);
+    if (sequence_out) *sequence_out = sequence;
+    {
+      std::lock_guard lock(publish_mutex_);
+      if (!commands_ || !commands_->publish(sample)) return false;
+    }
+    if (federate_) federate_->log().info("command {} from {}: {}", sequence, from, instructor::describe(command));
+    return true;
   }
 
   HttpResponse send_command(const HttpRequest& request) {
@@ -347,23 +464,10 @@ class Station {
                 error_body("reposition: no runway " + r->runway + " at " + r->airport + " in the navigation database").dump()};
       }
     }
-    msg::SimCommand sample = runtime::to_sim_command(command);
-    sample.issuer(options_.federate.name);
     std::uint32_t sequence = 0;
-    {
-      std::lock_guard lock(shared_.mutex);
-      copy_tick_locked(clock_s());
-      sequence = shared_.next_sequence++;
-      shared_.tracker.sent(sequence, command, clock_s(), shared_.lookup(), expected);
+    if (!send_request(command, request.remote_address, expected, &sequence)) {
+      return {503, "application/json", error_body("the station is not connected to the federation").dump()};
     }
-    sample.sequence_number(sequence);
-    {
-      std::lock_guard lock(publish_mutex_);
-      if (!commands_ || !commands_->publish(sample)) {
-        return {503, "application/json", error_body("the station is not connected to the federation").dump()};
-      }
-    }
-    if (federate_) federate_->log().info("command {} from {}: {}", sequence, request.remote_address, instructor::describe(command));
     return {200, "application/json", json{{"sequence", sequence}, {"text", instructor::describe(command)}}.dump()};
   }
 
@@ -416,6 +520,7 @@ class Station {
         return HttpResponse{400, "application/json", error_body(e.what()).dump()};
       }
     });
+    server_.handle("POST", "/api/scenario", [this](const HttpRequest& r) { return scenario_request(r); });
     server_.handle("GET", "/api/recordings", [this](const HttpRequest&) {
       return HttpResponse{200, "application/json", json(replay_ ? replay_->recordings() : std::vector<std::string>{}).dump()};
     });
@@ -428,10 +533,11 @@ class Station {
 
   std::string current_state() {
     const ServerStatistics statistics = server_.statistics();
+    const json scenario = scenario_state();
     std::lock_guard lock(shared_.mutex);
     const double now = clock_s();
     copy_tick_locked(now);
-    return state_message(shared_, now, statistics, options_.push_hz, replay_.get());
+    return state_message(shared_, now, statistics, options_.push_hz, replay_.get(), scenario);
   }
 
   void print_summary() {
@@ -461,6 +567,11 @@ class Station {
   runtime::Publisher<msg::SimCommand>* commands_ = nullptr;
   std::vector<std::shared_ptr<void>> taps_;
   std::unique_ptr<StationReplay> replay_;  // built once the federate's participant exists
+  std::mutex scenario_mutex_;              // the page's scenario, run on the frame thread
+  std::optional<scenario::Scenario> scenario_;
+  std::atomic<bool> scenario_running_{false};
+  std::string scenario_name_;
+  std::vector<std::string> scenario_fired_;
   std::atomic<bool> stopping_{false};
   // The newest tick, as the frame thread left it.
   std::atomic<std::uint64_t> tick_frame_{0}, ticks_{0};

@@ -17,6 +17,9 @@
 //   POST /api/command a command as JSON (common/instructor/request_json.hpp)
 //   POST /api/replay  start (the ring's last N s, or a recording), pause, resume, seek, speed,
 //                     take control (station_replay.hpp)
+//   POST /api/scenario start a scenario file of --scenarios (common/scenario), or stop it; it
+//                     runs on the frame thread: timed events on the tick's sim time, conditions
+//                     on the field registry (a frame the registry is busy is caught up next frame)
 //
 // Threads: the frame thread only notes the tick; DDS listener threads flatten at most a few
 // samples a second per topic into the field registry (ios/model/live_fields) under a mutex;
@@ -41,6 +44,7 @@ struct StationOptions {
   std::string navdb_file;       // "" = the built database
   double ring_minutes = 10.0;   // live aircraft state kept for "replay the last N minutes"
   std::string recordings = "out";  // folders (fedsim record / fedsim run --out) the page may replay
+  std::string scenarios;        // scenario files the page may run ("" = data/scenarios)
 };
 
 /// Runs the station until SIGINT/SIGTERM, a SHUTDOWN command or --duration. Exit codes as every

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--recordings", o.recordings, "folder of recordings the page may replay (fedsim record / fedsim run --out)")
       ->capture_default_str();
+  app.add_option("--scenarios", o.scenarios, "folder of scenario files the page may run (default: data/scenarios)");
   app.add_option("--navdb", o.navdb_file, "navigation database (default: the one the build made)");
   app.add_option("--web-root", o.server.web_root, "folder of the page's files")->capture_default_str();
   try {

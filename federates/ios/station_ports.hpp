@@ -20,4 +20,7 @@ inline constexpr StationRead kStationReads[] = {
     {"fedsim/visual_picture", "picture"},
 };
 
+/// What it writes besides fedsim/sim_command: the replay (station_replay.hpp), while one runs.
+inline constexpr StationRead kStationWrites[] = {{"fedsim/replay_state", "state"}};
+
 }  // namespace fedsim::ios

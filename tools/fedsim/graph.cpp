@@ -57,6 +57,9 @@ GraphNode station_node(const FederateSpec& f) {
     port.monitor = true;
     node.ports.push_back(port);
   }
+  for (const ios::StationRead& write : ios::kStationWrites) {
+    node.ports.push_back({std::string(write.topic), runtime::PortDirection::kWrite, std::string(write.qos), false});
+  }
   return node;
 }
 
@@ -81,7 +84,8 @@ GraphNode component_node(const FederateSpec& f, const std::vector<std::string>& 
   for (const auto& port : component->ports()) {
     const runtime::PortInfo& p = port->info();
     GraphNode::Port out{p.topic->name, p.direction, p.qos, p.lockstep_input};
-    out.monitor = p.direction == runtime::PortDirection::kRead && p.topic->lockstep_input && !p.lockstep_input;
+    out.monitor = p.direction == runtime::PortDirection::kRead &&
+                  (p.monitor || (p.topic->lockstep_input && !p.lockstep_input));
     node.ports.push_back(out);
   }
   return node;

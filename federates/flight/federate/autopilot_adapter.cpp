@@ -1,6 +1,7 @@
 #include "flight/federate/autopilot_adapter.hpp"
 
 #include "common/units/units.hpp"
+#include "nav/model/radio/vor_receiver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -107,7 +108,35 @@ afcs::AfcsIlsSignals ils_signals_from_receiver(const msg::NavReceiver& nav) {
     s.glide_path_angle_rad = nav.glide_path_angle_rad();
     s.glide_slope_distance_m = nav.glideslope_distance_m();
   }
+  s.vor = vor_signals_from_receiver(nav);
   return s;
+}
+
+namespace {
+afcs::VorToFrom to_from(msg::ToFromFlag flag) {
+  switch (flag) {
+    case msg::TO_FROM_TO: return afcs::VorToFrom::kTo;
+    case msg::TO_FROM_FROM: return afcs::VorToFrom::kFrom;
+    default: return afcs::VorToFrom::kOff;
+  }
+}
+}  // namespace
+
+afcs::AfcsVorSignals vor_signals_from_receiver(const msg::NavReceiver& nav) {
+  afcs::AfcsVorSignals v;
+  v.tuned = nav.signal() == msg::NAV_SIGNAL_VOR;
+  if (!v.tuned) return v;
+  v.valid = nav.status() == msg::SIGNAL_VALID;
+  v.cone_of_confusion = nav.status() == msg::SIGNAL_CONE_OF_CONFUSION;
+  if (v.valid) {
+    v.deviation = nav.course_deviation();
+    v.full_scale_rad = nav::VorReceiverSettings{}.full_scale_rad;
+    v.course_true_rad = nav.course_true_rad();
+    v.to_from = to_from(nav.to_from());
+  }
+  v.dme_valid = nav.dme_status() == msg::SIGNAL_VALID;
+  if (v.dme_valid) v.dme_slant_range_m = nav.dme_slant_range_m();
+  return v;
 }
 
 // The IDL enums list the modes in afcs_modes.hpp's order: the casts below rely on it.

@@ -1,5 +1,5 @@
 // The AFCS's translation layer in the flight federate (no DDS calls): the mode control panel of
-// fedsim/pilot_controls and NAV1's ILS readings of fedsim/navigation_state in, the FMA, the
+// fedsim/pilot_controls and NAV1's ILS or VOR readings of fedsim/navigation_state in, the FMA, the
 // flight-director bars and the AFCS's commands out on fedsim/autopilot_state.
 //
 // Buttons travel as press counters (controls.idl McpPanel): McpPressTracker turns the increase
@@ -41,10 +41,15 @@ class McpPressTracker {
   bool seen_ = false;
 };
 
-/// The AFCS's ILS port from a NAV receiver of the navigation state: the localizer only when the
-/// receiver holds a valid localizer signal, the glide slope only when its status is valid (a
-/// flagged signal's numbers are never passed on).
+/// The AFCS's NAV port from a NAV receiver of the navigation state: the localizer only when the
+/// receiver holds a valid localizer signal, the glide slope only when its status is valid; with
+/// a VOR received (signal VOR, valid or flagged) the vor part: tuned, valid, the cone-of-confusion
+/// flag, and when valid the deviation, course, TO/FROM (full scale: nav_radio's 10 deg, which
+/// navigation.idl does not carry), the DME's slant range when its status is valid. A flagged
+/// signal's numbers are never passed on.
 afcs::AfcsIlsSignals ils_signals_from_receiver(const msg::NavReceiver& nav);
+/// The vor part of ils_signals_from_receiver().
+afcs::AfcsVorSignals vor_signals_from_receiver(const msg::NavReceiver& nav);
 
 /// Fills an AutopilotState sample from the AFCS after its step (no allocation).
 void fill_autopilot_state(const afcs::Afcs& afcs, std::uint32_t transitions, msg::AutopilotState& out);

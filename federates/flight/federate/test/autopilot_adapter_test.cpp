@@ -164,6 +164,65 @@ TEST(IlsSignals, AFlaggedSignalPassesNoNumbers) {
   EXPECT_EQ(s.glide_slope_deviation, 0.0);
 }
 
+msg::NavReceiver vor_receiver() {
+  msg::NavReceiver r;
+  r.status(msg::SIGNAL_VALID);
+  r.signal(msg::NAV_SIGNAL_VOR);
+  r.course_deviation(-0.4);
+  r.course_true_rad(4.49);
+  r.to_from(msg::TO_FROM_FROM);
+  r.dme_status(msg::SIGNAL_VALID);
+  r.dme_slant_range_m(33000.0);
+  return r;
+}
+
+TEST(VorSignals, AValidVorPassesItsReadingAndItsDme) {
+  const afcs::AfcsIlsSignals s = ils_signals_from_receiver(vor_receiver());
+  EXPECT_FALSE(s.localizer_valid);  // a VOR is no localizer
+  EXPECT_FALSE(s.glide_slope_valid);
+  ASSERT_TRUE(s.vor.tuned);
+  ASSERT_TRUE(s.vor.valid);
+  EXPECT_FALSE(s.vor.cone_of_confusion);
+  EXPECT_DOUBLE_EQ(s.vor.deviation, -0.4);
+  EXPECT_DOUBLE_EQ(s.vor.course_true_rad, 4.49);
+  EXPECT_NEAR(s.vor.full_scale_rad, 10.0 * units::kDegToRad, 1e-12);  // nav_radio's CDI
+  EXPECT_EQ(s.vor.to_from, afcs::VorToFrom::kFrom);
+  EXPECT_TRUE(s.vor.dme_valid);
+  EXPECT_DOUBLE_EQ(s.vor.dme_slant_range_m, 33000.0);
+  msg::NavReceiver to = vor_receiver();
+  to.to_from(msg::TO_FROM_TO);
+  EXPECT_EQ(vor_signals_from_receiver(to).to_from, afcs::VorToFrom::kTo);
+  msg::NavReceiver no_dme = vor_receiver();
+  no_dme.dme_status(msg::SIGNAL_STATION_OFF_AIR);
+  no_dme.dme_slant_range_m(-1.0);  // the navigation federate's "no reading"
+  EXPECT_FALSE(vor_signals_from_receiver(no_dme).dme_valid);
+  EXPECT_EQ(vor_signals_from_receiver(no_dme).dme_slant_range_m, 0.0);
+  // A localizer is no VOR.
+  EXPECT_FALSE(vor_signals_from_receiver(localizer_receiver()).tuned);
+}
+
+TEST(VorSignals, AFlaggedVorPassesNoNumbersButSaysWhetherItIsTheCone) {
+  msg::NavReceiver cone = vor_receiver();
+  cone.status(msg::SIGNAL_CONE_OF_CONFUSION);
+  afcs::AfcsVorSignals v = vor_signals_from_receiver(cone);
+  EXPECT_TRUE(v.tuned);
+  EXPECT_FALSE(v.valid);
+  EXPECT_TRUE(v.cone_of_confusion);
+  EXPECT_EQ(v.deviation, 0.0);
+  EXPECT_EQ(v.course_true_rad, 0.0);
+  EXPECT_EQ(v.to_from, afcs::VorToFrom::kOff);
+  msg::NavReceiver off = vor_receiver();
+  off.status(msg::SIGNAL_STATION_OFF_AIR);
+  v = vor_signals_from_receiver(off);
+  EXPECT_TRUE(v.tuned);
+  EXPECT_FALSE(v.valid);
+  EXPECT_FALSE(v.cone_of_confusion);
+  msg::NavReceiver failed = vor_receiver();
+  failed.status(msg::SIGNAL_RECEIVER_FAILED);
+  failed.signal(msg::NAV_SIGNAL_NONE);  // a failed receiver receives nothing
+  EXPECT_FALSE(vor_signals_from_receiver(failed).tuned);
+}
+
 TEST(AutopilotState, CarriesTheFmaAndCommandsOfTheAfcs) {
   afcs::Afcs afcs(afcs::AfcsParameters{}, 1.0 / 60.0);
   afcs::AfcsInputs in;

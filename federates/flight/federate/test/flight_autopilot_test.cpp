@@ -3,8 +3,9 @@
 // and fedsim-nav run over DDS): the pilot's MCP presses come from a scripted input profile, NAV1
 // is tuned to the KSFO 28R localizer from the profile, the AFCS reads the navigation federate's
 // ILS readings, and the 737 flies from a 30 deg intercept to an automatic landing and rollout.
-// Also: the instructor's autopilot failure disengages it with an alert; a bad MCP panel is
-// rejected and counted.
+// Also: VOR/LOC on SFO VOR (NAV1 on 115.80 MHz, OBS 240) captures the radial from the
+// navigation federate's VOR readings; the instructor's autopilot failure disengages it with an
+// alert; a bad MCP panel is rejected and counted.
 #include "flight/federate/flight_program.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/landing_figures.hpp"
@@ -15,6 +16,7 @@
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
 
+#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -99,8 +101,10 @@ class Recorder final : public runtime::Component {
 /// The I/O, flight and navigation components with a recorder, in one composition at 50 Hz.
 struct ApproachFederation {
   explicit ApproachFederation(const std::string& profile, bool autopilot = true)
+      : ApproachFederation(profile, approach_options(autopilot)) {}
+  ApproachFederation(const std::string& profile, const FlightOptions& options)
       : io("io", std::make_unique<io::InputProfile>(io::InputProfile::parse(profile, "approach.csv")), 0),
-        flight(make_flight_component("flight", approach_options(autopilot))),
+        flight(make_flight_component("flight", options)),
         nav("nav", nav_setup()),
         composition({}) {
     composition.add(io);
@@ -200,6 +204,54 @@ TEST(FlightAutopilot, WithNavOneUntunedTheApproachArmsButNeverCaptures) {
   EXPECT_FALSE(f.recorder.touchdown);
   EXPECT_TRUE(f.recorder.autopilot.fma().autopilot_engaged());
   EXPECT_TRUE(f.recorder.autopilot.fma().roll_armed_localizer());
+}
+
+TEST(FlightAutopilot, CapturesAVorRadialFromTheNavFederatesVorReadings) {
+  // 3 NM left of SFO R-240 (OBS 240, 257.0 deg true), 30 deg towards it, to cross it 18 NM out;
+  // 250 KCAS at 10,000 ft, clean. NAV1 on 115.80 from the profile; VOR LOC pressed at 2 s.
+  const nav::NavDatabase db = nav::NavDatabase::open(nav::default_database_path());
+  const auto sfo = db.nearest_on_frequency(37.6 * kDeg, -122.4 * kDeg, 115800);
+  ASSERT_TRUE(sfo && sfo->navaid.ident == "SFO");
+  const double course_deg = 240.0 + sfo->navaid.slaved_variation_rad / kDeg;
+  const auto& geod = GeographicLib::Geodesic::WGS84();
+  double lat = 0, lon = 0, lat2 = 0, lon2 = 0;
+  geod.Direct(sfo->navaid.position.lat_rad / kDeg, sfo->navaid.position.lon_rad / kDeg, course_deg,
+              (18.0 - 3.0 / std::tan(30.0 * kDeg)) * 1852.0, lat, lon);
+  geod.Direct(lat, lon, course_deg - 90.0, 3.0 * 1852.0, lat2, lon2);
+  FlightOptions o;
+  o.aircraft = "b737";
+  o.autopilot = true;
+  o.controls = "relative";
+  o.start.trim_kind = "level";
+  o.start.lat_deg = lat2;
+  o.start.lon_deg = lon2;
+  o.start.alt_ft = 10000.0;
+  o.start.kcas = 250.0;
+  o.start.heading_deg = course_deg + 30.0;
+  const std::string profile =
+      "time_s,nav1_mhz,obs1_deg,fd,at_arm,mcp_speed_kt,mcp_altitude_ft,mcp_cmd,mcp_alt_hld,mcp_speed,mcp_vor_loc\n"
+      "0.0,115.80,240,1,1,250,10000,0,0,0,0\n"
+      "0.5,115.80,240,1,1,250,10000,0,0,0,0\n0.5,115.80,240,1,1,250,10000,1,0,0,0\n"
+      "0.6,115.80,240,1,1,250,10000,1,0,0,0\n0.6,115.80,240,1,1,250,10000,0,0,0,0\n"
+      "1.0,115.80,240,1,1,250,10000,0,0,0,0\n1.0,115.80,240,1,1,250,10000,0,1,1,0\n"
+      "1.1,115.80,240,1,1,250,10000,0,1,1,0\n1.1,115.80,240,1,1,250,10000,0,0,0,0\n"
+      "2.0,115.80,240,1,1,250,10000,0,0,0,0\n2.0,115.80,240,1,1,250,10000,0,0,0,1\n"
+      "2.1,115.80,240,1,1,250,10000,0,0,0,1\n2.1,115.80,240,1,1,250,10000,0,0,0,0\n";
+  ApproachFederation f(profile, o);
+  f.fly_to_stop(10.0);
+  EXPECT_TRUE(f.recorder.autopilot.fma().roll_armed_localizer());
+  EXPECT_EQ(f.recorder.autopilot.fma().roll(), msg::FMA_ROLL_HEADING_HOLD);
+  f.fly_to_stop(230.0);
+  std::printf("Federation, SFO R-240 from 30 deg: VOR/LOC captured at %.1f s, %.0f m off the radial at %.0f s\n",
+              f.recorder.loc_capture_s, f.recorder.autopilot.cross_track_left_m(),
+              f.recorder.autopilot.stamp().sim_time_s());
+  EXPECT_GT(f.recorder.loc_capture_s, 30.0);  // at the lead point (about 60 s), not at once
+  EXPECT_EQ(f.recorder.autopilot.fma().roll(), msg::FMA_ROLL_LOCALIZER);
+  EXPECT_FALSE(f.recorder.autopilot.fma().pitch_armed_glide_slope());
+  EXPECT_TRUE(f.recorder.autopilot.fma().autopilot_engaged());
+  EXPECT_EQ(f.recorder.autopilot.fma().alerts(), 0u);
+  // 1 deg (0.1 of full scale) at 18 NM is 580 m.
+  EXPECT_LT(std::abs(f.recorder.autopilot.cross_track_left_m()), 100.0);
 }
 
 TEST(FlightAutopilot, TheInstructorsAutopilotFailureDisengagesItWithAnAlert) {

@@ -34,6 +34,10 @@ control::PidParameters speed_on_elevator_pid(const SpeedOnElevatorGains& g) {
 }
 
 // Source ids for the faders: a mode enum, or a group of modes that share a law.
+int bank_law(const ModeState& m) {
+  return static_cast<int>(m.lateral) + (m.vor ? 100 : 0) + (m.vor_over_station ? 100 : 0);
+}
+
 int rudder_law(LateralMode mode) {
   switch (mode) {
     case LateralMode::kAlign: return 1;
@@ -50,6 +54,7 @@ struct Afcs::Guidance {
   double altitude_error_m = 0.0;  // MCP altitude - altitude
   bool localizer_valid = false;
   double cross_track_left_m = 0.0;
+  VorEstimate vor;                // NAV1's VOR (vor_guidance)
   bool glide_slope_valid = false;
   double height_error_m = 0.0;    // below the glide path
   double deceleration_mps2 = 0.0;
@@ -62,7 +67,7 @@ struct Afcs::Guidance {
 Afcs::Afcs(const AfcsParameters& parameters, double dt_s, TransitionCallback on_transition)
     : parameters_(checked(parameters)),
       dt_s_(checked_dt(dt_s)),
-      logic_(std::move(on_transition)),
+      logic_(std::move(on_transition), parameters_.vor),
       pitch_loop_(parameters_.pitch, dt_s_),
       roll_loop_(parameters_.roll, dt_s_),
       yaw_(parameters_.yaw, dt_s_),
@@ -70,6 +75,7 @@ Afcs::Afcs(const AfcsParameters& parameters, double dt_s, TransitionCallback on_
       speed_on_elevator_(speed_on_elevator_pid(parameters_.speed_on_elevator), dt_s_),
       autothrottle_(parameters_.autothrottle, dt_s_),
       rollout_(parameters_.rollout, dt_s_),
+      vor_(parameters_.vor, dt_s_),
       bank_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
       path_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
       pitch_fader_(std::max(parameters_.fade_time_s, dt_s_), dt_s_),
@@ -83,6 +89,7 @@ Afcs::Afcs(const AfcsParameters& parameters, double dt_s, TransitionCallback on_
 
 void Afcs::reset() {
   logic_.reset();
+  vor_.reset();
   outputs_ = AfcsOutputs{};
   input_problem_ = {};
   first_frame_ = true;
@@ -104,6 +111,7 @@ const AfcsOutputs& Afcs::step(const AfcsInputs& in) {
     return outputs_;
   }
   side_force_.step(in.aircraft.lateral_specific_force_mps2);
+  vor_.step(in.ils.vor, in.aircraft.ground_speed_mps, in.aircraft.track_true_rad);
   const Guidance g = evaluate_guidance(in);
   const ModeConditions c = conditions(in, g);
   const ModeState before = logic_.state();
@@ -155,6 +163,7 @@ Afcs::Guidance Afcs::evaluate_guidance(const AfcsInputs& in) const {
     g.cross_track_left_m = localizer_cross_track_left_m(ils.localizer_deviation, ils.localizer_half_width_rad,
                                                         ils.localizer_distance_m);
   }
+  g.vor = vor_.estimate();
   g.glide_slope_valid = ils.glide_slope_valid;
   if (g.glide_slope_valid) {
     g.height_error_m = glide_path_height_error_m(ils.glide_slope_deviation, ils.glide_path_angle_rad,
@@ -184,6 +193,16 @@ ModeConditions Afcs::conditions(const AfcsInputs& in, const Guidance& g) const {
     c.localizer_capture = localizer_capture_point(in.ils.localizer_deviation, g.cross_track_left_m,
                                                   in.ils.localizer_course_true_rad, a.track_true_rad,
                                                   a.ground_speed_mps, p.lateral);
+  }
+  c.vor_tuned = in.ils.vor.tuned;
+  c.vor_valid = in.ils.vor.tuned && g.vor.valid;
+  c.vor_cone_of_confusion = in.ils.vor.tuned && in.ils.vor.cone_of_confusion;
+  c.vor_station_passage = g.vor.erratic || g.vor.passed_station;
+  if (c.vor_valid) {
+    // On scale by the raw deviation (what the CDI shows), the lead on the filtered one.
+    c.vor_capture = course_capture_point(in.ils.vor.deviation, g.vor.cross_track_left_m, in.ils.vor.course_true_rad,
+                                         a.track_true_rad, a.ground_speed_mps,
+                                         vor_course_law(p.lateral, p.vor, in.mcp.bank_limit_rad));
   }
   if (g.glide_slope_valid) {
     c.glide_slope_capture = glide_slope_capture_point(in.ils.glide_slope_deviation, g.height_error_m,
@@ -233,6 +252,10 @@ void Afcs::enter_modes(const ModeState& before, const AfcsInputs& in, const Guid
       yaw_.engage_coordination(outputs_.rudder, a.sideslip_rad);
     }
   }
+  if (m.vor_over_station && !before.vor_over_station) {
+    over_station_course_rad_ = g.vor.course_true_rad;  // the last valid course: the cone flags the reading
+  }
+  if (!m.vor_over_station && before.vor_over_station) vor_.station_passed();
   if (m.vertical != before.vertical) {
     switch (m.vertical) {
       case VerticalMode::kPitchAttitude: hold_pitch_rad_ = a.pitch_rad; break;
@@ -291,6 +314,10 @@ double Afcs::bank_command_rad(const AfcsInputs& in, const Guidance& g) {
                                           in.mcp.bank_limit_rad);
       break;
     case LateralMode::kLocalizer:
+      if (logic_.state().vor) {
+        bank = vor_bank_command_rad(in, g);
+        break;
+      }
       bank = bank_for_direction_error_rad(
           localizer_track_command_rad(g.cross_track_left_m, in.ils.localizer_course_true_rad, a.ground_speed_mps, lat) -
               a.track_true_rad,
@@ -314,8 +341,24 @@ double Afcs::bank_command_rad(const AfcsInputs& in, const Guidance& g) {
     case LateralMode::kNone:
       break;
   }
-  const double faded = bank_fader_.step(static_cast<int>(logic_.state().lateral), bank);
+  const double faded = bank_fader_.step(bank_law(logic_.state()), bank);
   return bank_rate_.step(faded);
+}
+
+double Afcs::vor_bank_command_rad(const AfcsInputs& in, const Guidance& g) const {
+  // The localizer's law on the VOR's lateral distance (lateral_guidance), within the MCP's bank
+  // limit (the 737's bank angle selector limits VOR/LOC as HDG SEL); over the station the
+  // course is held as a track: the bearing there is lost or meaningless.
+  const AfcsAircraftState& a = in.aircraft;
+  const LateralGains& lat = parameters_.lateral;
+  const double limit = std::min(in.mcp.bank_limit_rad, lat.approach_bank_limit_rad);
+  const double track_c =
+      logic_.state().vor_over_station
+          ? over_station_course_rad_
+          : course_track_command_rad(g.vor.cross_track_left_m, g.vor.course_true_rad, a.ground_speed_mps,
+                                     vor_course_law(lat, parameters_.vor, in.mcp.bank_limit_rad));
+  return bank_for_direction_error_rad(track_c - a.track_true_rad, a.true_airspeed_mps, lat.heading_time_constant_s,
+                                      limit);
 }
 
 double Afcs::path_command_rad(const AfcsInputs& in, const Guidance& g) {
@@ -517,9 +560,10 @@ void Afcs::fill_annunciation(const Guidance& g, double pitch_c, double bank_c) {
   outputs_.flight_director_pitch_valid = m.vertical != VerticalMode::kNone;
   outputs_.flight_director_pitch_rad = outputs_.flight_director_pitch_valid ? pitch_c : 0.0;
   outputs_.fma = Fma{m.thrust, m.lateral, m.lateral_armed, m.vertical, m.vertical_armed,
-                     m.autopilot_engaged, m.flight_director_on, m.autothrottle_engaged, m.alerts};
+                     m.autopilot_engaged, m.flight_director_on, m.autothrottle_engaged, m.alerts,
+                     m.vor, m.vor_over_station};
   outputs_.flight_path_command_rad = path_command_rad_;
-  outputs_.cross_track_left_m = g.cross_track_left_m;
+  outputs_.cross_track_left_m = m.vor ? g.vor.cross_track_left_m : g.cross_track_left_m;
   outputs_.glide_path_height_error_m = g.height_error_m;
 }
 
@@ -534,7 +578,8 @@ void Afcs::hold_after_bad_sample() {
   outputs_.flight_director_roll_valid = false;
   outputs_.flight_director_pitch_valid = false;
   outputs_.fma = Fma{m.thrust, m.lateral, m.lateral_armed, m.vertical, m.vertical_armed,
-                     m.autopilot_engaged, m.flight_director_on, m.autothrottle_engaged, m.alerts};
+                     m.autopilot_engaged, m.flight_director_on, m.autothrottle_engaged, m.alerts,
+                     m.vor, m.vor_over_station};
 }
 
 }  // namespace fedsim::flight::afcs

@@ -6,7 +6,8 @@
 //
 // Per frame: step(AfcsInputs) -> AfcsOutputs (afcs_inputs.hpp, afcs_outputs.hpp).
 //   1. the inputs are checked (a bad sample disengages with an alert: nothing reaches a law);
-//   2. the guidance evaluates the capture points and heights (vertical_guidance, lateral_guidance);
+//   2. the guidance evaluates the capture points and heights (vertical_guidance, lateral_guidance,
+//      vor_guidance);
 //   3. the mode logic (mode_logic.hpp) moves the modes; each change is reported to the callback;
 //   4. the laws of the active modes give a flight-path, pitch and bank command, faded on a mode
 //      change (common/control Fader) and rate limited;
@@ -29,6 +30,7 @@
 #include "flight/model/afcs/mode_logic.hpp"
 #include "flight/model/afcs/rollout_control.hpp"
 #include "flight/model/afcs/vertical_guidance.hpp"
+#include "flight/model/afcs/vor_guidance.hpp"
 #include "flight/model/afcs/yaw_channel.hpp"
 
 namespace fedsim::flight::afcs {
@@ -59,6 +61,7 @@ class Afcs {
   ModeConditions conditions(const AfcsInputs& in, const Guidance& g) const;
   void enter_modes(const ModeState& before, const AfcsInputs& in, const Guidance& g);
   double bank_command_rad(const AfcsInputs& in, const Guidance& g);
+  double vor_bank_command_rad(const AfcsInputs& in, const Guidance& g) const;
   double path_command_rad(const AfcsInputs& in, const Guidance& g);
   double pitch_command_rad(const AfcsInputs& in, const Guidance& g);
   void fly_surfaces(const AfcsInputs& in, const Guidance& g, double pitch_c, double bank_c);
@@ -79,6 +82,7 @@ class Afcs {
   control::Pid speed_on_elevator_;
   Autothrottle autothrottle_;
   RolloutControl rollout_;
+  VorGuidance vor_;
   control::Fader bank_fader_;
   control::Fader path_fader_;
   control::Fader pitch_fader_;
@@ -100,6 +104,7 @@ class Afcs {
   double hold_bank_rad_ = 0.0;
   double hold_pitch_rad_ = 0.0;
   double hold_track_rad_ = 0.0;
+  double over_station_course_rad_ = 0.0;  // the VOR course held over the station
   double go_around_speed_mps_ = 0.0;
   double level_change_direction_ = 1.0;  // +1 climbing, -1 descending
   FlareLaw flare_;

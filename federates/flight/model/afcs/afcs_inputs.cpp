@@ -39,6 +39,22 @@ std::string_view aircraft_problem(const AfcsAircraftState& a) {
   return {};
 }
 
+std::string_view vor_problem(const AfcsVorSignals& v) {
+  if (v.valid) {
+    if (!v.tuned) return "ils.vor.tuned";  // a valid VOR reading comes from a receiver tuned to it
+    if (!in(v.deviation, -1.0, 1.0)) return "ils.vor.deviation";
+    if (!(std::isfinite(v.full_scale_rad) && v.full_scale_rad > 0.0 && v.full_scale_rad <= 20.0 * kDeg)) {
+      return "ils.vor.full_scale_rad";
+    }
+    if (!std::isfinite(v.course_true_rad)) return "ils.vor.course_true_rad";
+    if (v.to_from != VorToFrom::kOff && v.to_from != VorToFrom::kTo && v.to_from != VorToFrom::kFrom) {
+      return "ils.vor.to_from";
+    }
+  }
+  if (v.dme_valid && !in(v.dme_slant_range_m, 0.0, 500000.0)) return "ils.vor.dme_slant_range_m";
+  return {};
+}
+
 std::string_view ils_problem(const AfcsIlsSignals& s) {
   if (s.localizer_valid) {
     if (!in(s.localizer_deviation, -1.0, 1.0)) return "ils.localizer_deviation";
@@ -55,7 +71,7 @@ std::string_view ils_problem(const AfcsIlsSignals& s) {
     if (!in(s.glide_slope_distance_m, 0.0, 100000.0)) return "ils.glide_slope_distance_m";
   }
   if (!in(s.distance_to_threshold_m, -100000.0, 100000.0)) return "ils.distance_to_threshold_m";
-  return {};
+  return vor_problem(s.vor);
 }
 
 std::string_view mcp_problem(const McpSelections& m) {

@@ -5,14 +5,18 @@
 //   aircraft  - the flight model's state (AircraftOutputs through model_coupling.hpp, or the
 //               aircraft-state topic in a federation) and the pilot's present control commands
 //               (for bumpless engagement);
-//   ils       - the NAV receiver's localizer and glide-slope readings (nav_radio) with their
-//               validity: a flagged signal is never flown;
+//   ils       - the NAV1 receiver's readings (nav_radio) with their validity: the localizer and
+//               glide slope of an ILS, or (ils.vor) a VOR with its DME; a flagged signal is
+//               never flown;
 //   mcp       - the mode control panel: selections (held values) and buttons (true in the frame
 //               the button is pressed: edges, as the I/O federate's discretes arrive).
 // Every number is checked each frame (afcs_input_problem()): a bad sample disengages the
 // autopilot with an alert rather than reaching a control law.
 #pragma once
 
+#include "common/units/units.hpp"
+
+#include <cstdint>
 #include <string_view>
 
 namespace fedsim::flight::afcs {
@@ -47,6 +51,22 @@ struct AfcsAircraftState {
   double pitch_trim = 0.0;  // the pitch trim's present position, -1..1 in the elevator's sense
 };
 
+/// The VOR's TO/FROM flag (nav_radio ToFrom, navigation.idl ToFromFlag).
+enum class VorToFrom : std::uint8_t { kOff, kTo, kFrom };
+
+/// NAV1 tuned to a VOR (then the localizer and glide slope of AfcsIlsSignals read flagged).
+struct AfcsVorSignals {
+  bool tuned = false;              // NAV1's course signal is a VOR, valid or flagged
+  bool valid = false;              // false: flagged (the numbers below, DME apart, are ignored)
+  bool cone_of_confusion = false;  // flagged because overhead the station (the receiver says so)
+  double deviation = 0.0;          // CDI, -1..1 of full scale, + = fly right [-]
+  double full_scale_rad = 10.0 * units::kDegToRad;  // angle off course at full scale, (0, 20 deg]
+  double course_true_rad = 0.0;    // the selected course (OBS) converted to true [rad]
+  VorToFrom to_from = VorToFrom::kOff;
+  bool dme_valid = false;          // the DME paired with the VOR's frequency is received
+  double dme_slant_range_m = 0.0;  // [m], [0, 500 km] when valid
+};
+
 struct AfcsIlsSignals {
   bool localizer_valid = false;        // false: flagged (numbers below ignored)
   double localizer_deviation = 0.0;    // -1..1 of full scale, + = fly right [-]
@@ -58,6 +78,9 @@ struct AfcsIlsSignals {
   double glide_path_angle_rad = 0.0;   // theta_gs [rad], [0.5 deg, 10 deg] when valid
   double glide_slope_distance_m = 0.0; // from the glide-slope antenna [m], [0, 100 km]
   double distance_to_threshold_m = 0.0;  // along the course, + before the threshold [m]
+  // NAV1 is one receiver: the federate passes its reading here whether it holds a localizer or
+  // a VOR (autopilot_adapter ils_signals_from_receiver), the batch runs the same (model_coupling).
+  AfcsVorSignals vor;
 };
 
 /// Mode-control-panel buttons: true in the frame the button is pressed.

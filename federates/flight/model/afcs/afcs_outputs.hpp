@@ -31,6 +31,7 @@ enum AfcsAlert : std::uint32_t {
   kAlertAttitudeLimit = 1u << 6,          // bank or pitch beyond the autopilot's authority
   kAlertAutopilotFailed = 1u << 7,        // the autopilot failed (instructor): disengaged, refuses CMD
   kAlertAutothrottleFailed = 1u << 8,     // the autothrottle failed (instructor)
+  kAlertVorInvalid = 1u << 9,             // the VOR flagged while flown (not the cone overhead)
 };
 
 /// The flight-mode annunciator.
@@ -44,6 +45,8 @@ struct Fma {
   bool flight_director_on = false;    // "FD"
   bool autothrottle_engaged = false;  // A/T armed or active
   std::uint32_t alerts = kAlertNone;  // AfcsAlert bits, latched until acknowledged
+  bool vor = false;                   // VOR/LOC flies a VOR (not the localizer)
+  bool vor_over_station = false;      // ... holding the course over the station
   friend bool operator==(const Fma&, const Fma&) = default;
 };
 
@@ -68,7 +71,7 @@ struct AfcsOutputs {
   Fma fma;
   // Guidance quantities for displays, recorders and tests.
   double flight_path_command_rad = 0.0;   // gamma_c of the active path mode (0 otherwise)
-  double cross_track_left_m = 0.0;        // from the localizer (0 when not valid)
+  double cross_track_left_m = 0.0;        // from the localizer, or the VOR VOR/LOC flies (0 when not valid)
   double glide_path_height_error_m = 0.0; // + below the path (0 when not valid)
 };
 

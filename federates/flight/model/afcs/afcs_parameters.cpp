@@ -93,6 +93,16 @@ void AfcsParameters::validate() const {
   within("lateral.low_height_bank_limit_rad", lateral.low_height_bank_limit_rad, 1 * kDeg, 15 * kDeg);
   positive("lateral.side_force_filter_s", lateral.side_force_filter_s);
 
+  positive("vor.track_time_constant_s", vor.track_time_constant_s);
+  positive("vor.deviation_filter_s", vor.deviation_filter_s);
+  positive("vor.min_nominal_distance_m", vor.min_nominal_distance_m);
+  within("vor.max_nominal_distance_m", vor.max_nominal_distance_m, vor.min_nominal_distance_m, 500000.0);
+  within("vor.nominal_distance_m", vor.nominal_distance_m, vor.min_nominal_distance_m, vor.max_nominal_distance_m);
+  positive("vor.erratic_rate_per_s", vor.erratic_rate_per_s);
+  positive("vor.erratic_filter_s", vor.erratic_filter_s);
+  non_negative("vor.over_station_hold_s", vor.over_station_hold_s);
+  within("vor.max_over_station_s", vor.max_over_station_s, vor.over_station_hold_s, 3600.0);
+
   positive("autoland.flare_arm_height_m", autoland.flare_arm_height_m);
   within("autoland.align_height_m", autoland.align_height_m, 0.0, autoland.flare_arm_height_m);
   within("autoland.flare_height_m", autoland.flare_height_m, 1.0, autoland.flare_arm_height_m);

@@ -84,6 +84,29 @@ struct LateralGains {
   double side_force_filter_s = 1.0;  // low-pass of the lateral specific force (ALIGN's slip bank)
 };
 
+/// VOR tracking (VOR/LOC on a VOR). The beam is 10 deg full scale against the localizer's ~2-3
+/// deg, and a real one is noisier (scalloping, site errors; nav_radio's is exact): the law is
+/// the localizer's on the lateral distance (DME x angle), with a softer time constant and the
+/// deviation low-passed.
+struct VorGains {
+  double track_time_constant_s = 20.0;  // cross-track decay (the localizer's: 16 s)
+  double deviation_filter_s = 1.0;      // low-pass of the deviation (its lag is added to the capture lead)
+  // Without DME: the distance assumed when the VOR is first received (or the DME lost: then
+  // the last DME distance), dead-reckoned along the course (TO: closing, FROM: opening) within
+  // [min, max], the minimum after a station passage.
+  double nominal_distance_m = 15.0 * units::kNmToM;
+  double min_nominal_distance_m = 5.0 * units::kNmToM;
+  double max_nominal_distance_m = 60.0 * units::kNmToM;
+  // Station passage: entered on the cone-of-confusion flag, a deviation moving faster than
+  // erratic_rate (full scale per second, low-passed over erratic_filter_s) or the TO/FROM flag
+  // turning from TO to FROM; the course is held until over_station_hold_s after the last of these
+  // (and the signal valid); a flag still there after max_over_station_s is a failure.
+  double erratic_rate_per_s = 0.1;      // 1 deg/s: 5x the rate of a 45 deg intercept at 5 NM, 290 kt
+  double erratic_filter_s = 0.5;
+  double over_station_hold_s = 10.0;
+  double max_over_station_s = 120.0;    // the cone at FL350 is 12 km across: 50 s at 480 kt
+};
+
 /// Autoland heights and the flare.
 struct AutolandGains {
   double flare_arm_height_m = 1500.0 * units::kFtToM;
@@ -164,6 +187,7 @@ struct AfcsParameters {
   SpeedOnElevatorGains speed_on_elevator;
   GlideSlopeGains glide_slope;
   LateralGains lateral;
+  VorGains vor;
   AutolandGains autoland;
   RolloutGains rollout;
   AutothrottleGains autothrottle;

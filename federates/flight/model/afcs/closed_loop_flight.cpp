@@ -46,10 +46,20 @@ ClosedLoopFlight::ClosedLoopFlight(AircraftPack pack, nav::IlsApproach approach,
 
 TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double heading_true_rad, double tas_mps,
                                          const AircraftControls& configuration) {
+  return start_level_at(approach_point_position(approach_, geometry_, point), heading_true_rad, tas_mps,
+                        configuration);
+}
+
+void ClosedLoopFlight::set_nav1(nav::NavRadio* radio, const nav::NavTuning& tuning) {
+  nav1_ = radio;
+  nav1_tuning_ = tuning;
+}
+
+TrimResult ClosedLoopFlight::start_level_at(const GeodeticPosition& position, double heading_true_rad,
+                                            double tas_mps, const AircraftControls& configuration) {
   model_->set_controls(configuration);
   model_->set_runway_elevation_m(approach_.threshold.elevation_m);
-  const TrimResult trim = reposition_to_point(*model_, approach_point_position(approach_, geometry_, point),
-                                              heading_true_rad, tas_mps);
+  const TrimResult trim = reposition_to_point(*model_, position, heading_true_rad, tas_mps);
   pilot_ = trim.controls;
   afcs_->reset();
   transitions_.clear();
@@ -59,7 +69,7 @@ TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double head
   pending_ = McpButtons{};
   ils_queue_.clear();
   mcp_.heading_true_rad = heading_true_rad;
-  mcp_.altitude_m = point.altitude_m;
+  mcp_.altitude_m = position.alt_m;
   mcp_.calibrated_airspeed_mps = std::clamp(model_->outputs().cas_mps, 40.0, 200.0);
   sample_ = FlightSample{};
   return trim;
@@ -88,7 +98,8 @@ const FlightSample& ClosedLoopFlight::step() {
   if (glide_slope_off_air_) gs = nav::GlideSlopeReading{nav::SignalStatus::kStationOffAir, gs.ident};
   AfcsInputs in;
   in.aircraft = afcs_aircraft_state(o, pack_, gear_, pilot_);
-  ils_queue_.push_back(ils_signals(loc, gs, approach_, geometry_, pose));
+  ils_queue_.push_back(nav1_ != nullptr ? nav1_signals(nav1_->receive(nav1_tuning_, pose), pose)
+                                        : ils_signals(loc, gs, approach_, geometry_, pose));
   const auto delay = static_cast<std::size_t>(options_.ils_delay_frames);
   in.ils = ils_queue_.size() > delay ? ils_queue_.front() : AfcsIlsSignals{};
   if (ils_queue_.size() > delay) ils_queue_.pop_front();
@@ -138,6 +149,10 @@ void ClosedLoopFlight::record(const AfcsInputs& in, const AfcsOutputs& out, cons
   s.localizer_deviation = in.ils.localizer_deviation;
   s.glide_slope_valid = in.ils.glide_slope_valid;
   s.glide_slope_deviation = in.ils.glide_slope_deviation;
+  s.lat_rad = o.geodetic.lat_rad;
+  s.lon_rad = o.geodetic.lon_rad;
+  s.vor_valid = in.ils.vor.valid;
+  s.vor_deviation = in.ils.vor.deviation;
   s.elevator = applied.elevator;
   s.aileron = applied.aileron;
   s.rudder = applied.rudder;

@@ -1,6 +1,7 @@
 // The AFCS, the NAV receivers and the flight model composed in-process for batch runs (the
 // closed-loop tests and the autoland Monte Carlo): every frame the localizer and glide-slope
-// receivers (nav_radio) read the ILS record at the aircraft's position, the AFCS steps on the
+// receivers (nav_radio) read the ILS record at the aircraft's position (or, set_nav1(), a NAV
+// radio tuned over a station source reads a VOR or an ILS), the AFCS steps on the
 // aircraft state and those readings, its engaged channels replace the pilot's controls, and the
 // flight model steps one frame. Same order and data as the flight federate hosting the AFCS,
 // with no DDS. Records one FlightSample per frame, every mode transition and the touchdown.
@@ -12,6 +13,7 @@
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/scenario/trim.hpp"
 #include "nav/model/radio/approach_geometry.hpp"
+#include "nav/model/radio/nav_radio.hpp"
 
 #include <deque>
 #include <memory>
@@ -42,6 +44,9 @@ struct FlightSample {
   double bank_command_rad = 0.0, pitch_command_rad = 0.0, path_command_rad = 0.0;  // the AFCS's
   double localizer_deviation = 0.0, glide_slope_deviation = 0.0;  // 0 when flagged
   bool localizer_valid = false, glide_slope_valid = false;
+  double lat_rad = 0.0, lon_rad = 0.0;  // CG, geodetic [rad]
+  double vor_deviation = 0.0;           // NAV1's VOR (set_nav1), 0 when flagged [-]
+  bool vor_valid = false;
   double elevator = 0.0, aileron = 0.0, rudder = 0.0, throttle = 0.0, pitch_trim = 0.0;
   double steering = 0.0, brake = 0.0;
   bool main_gear_on_ground = false, nose_gear_on_ground = false;
@@ -83,6 +88,16 @@ class ClosedLoopFlight {
   /// threshold's elevation. The AFCS is reset (everything off).
   TrimResult start_level(const ApproachPoint& point, double heading_true_rad, double tas_mps,
                          const AircraftControls& configuration);
+  /// The same at a geodetic position (alt_m: the altitude).
+  TrimResult start_level_at(const GeodeticPosition& position, double heading_true_rad, double tas_mps,
+                            const AircraftControls& configuration);
+  /// NAV1 as the federation has it: from the next frame the AFCS's NAV port reads `radio` (a
+  /// nav_radio NavRadio over a station source, e.g. the navigation database's stations) tuned to
+  /// `tuning`, a VOR or an ILS (nav1_signals()), instead of the ILS receivers on the approach
+  /// record. nullptr: back to those. The radio must outlive its use; set_failed() on it fails NAV1.
+  void set_nav1(nav::NavRadio* radio, const nav::NavTuning& tuning);
+  /// NAV1's frequency and OBS (set_nav1()), changeable between frames.
+  nav::NavTuning& nav1_tuning() { return nav1_tuning_; }
   /// The ILS course [rad] (true, inbound).
   double course_rad() const { return approach_.course_true_rad; }
 
@@ -147,6 +162,8 @@ class ClosedLoopFlight {
   bool recording_ = true;
   bool localizer_off_air_ = false;
   bool glide_slope_off_air_ = false;
+  nav::NavRadio* nav1_ = nullptr;
+  nav::NavTuning nav1_tuning_;
 };
 
 /// The geodetic position of an approach point (the inverse of nav::course_coordinates: the

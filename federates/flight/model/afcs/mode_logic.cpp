@@ -21,6 +21,7 @@ std::string_view to_string(ModeTransition::Channel channel) {
     case C::kVerticalArmed: return "vertical_armed";
     case C::kThrust: return "thrust";
     case C::kAlert: return "alert";
+    case C::kLateralSubmode: return "lateral_submode";
   }
   return "?";
 }
@@ -37,11 +38,13 @@ std::string_view alert_name(AfcsAlert alert) {
     case kAlertAttitudeLimit: return "ATTITUDE LIMIT";
     case kAlertAutopilotFailed: return "AP FAILED";
     case kAlertAutothrottleFailed: return "A/T FAILED";
+    case kAlertVorInvalid: return "VOR FLAG";
   }
   return "?";
 }
 
-ModeLogic::ModeLogic(TransitionCallback on_transition) : on_transition_(std::move(on_transition)) {}
+ModeLogic::ModeLogic(TransitionCallback on_transition, const VorGains& vor)
+    : on_transition_(std::move(on_transition)), vor_gains_(vor) {}
 
 void ModeLogic::reset() {
   state_ = ModeState{};
@@ -63,7 +66,7 @@ const ModeState& ModeLogic::update(double time_s, const McpButtons& buttons,
   if (c.inputs_valid && modes_available()) {
     go_around(buttons, c);
     if (!approach_locked()) {
-      lateral_buttons(buttons);
+      lateral_buttons(buttons, c);
       vertical_buttons(buttons, c);
     }
     automatic_lateral(c);
@@ -90,7 +93,7 @@ void ModeLogic::acknowledge(const McpButtons& buttons) {
   if (buttons.autopilot_disconnect && !state_.autopilot_engaged) {
     for (AfcsAlert a : {kAlertAutopilotDisconnect, kAlertLocalizerInvalid, kAlertGlideSlopeInvalid,
                         kAlertInputInvalid, kAlertEngageRefused, kAlertAttitudeLimit,
-                        kAlertAutopilotFailed}) {
+                        kAlertAutopilotFailed, kAlertVorInvalid}) {
       clear_alert(a, "acknowledged");
     }
   }
@@ -123,7 +126,7 @@ void ModeLogic::protect(const ModeConditions& c) {
     }
     return;
   }
-  const bool flies_localizer = state_.lateral == LateralMode::kLocalizer ||
+  const bool flies_localizer = (state_.lateral == LateralMode::kLocalizer && !state_.vor) ||
                                state_.lateral == LateralMode::kAlign ||
                                state_.lateral == LateralMode::kRollout;
   if (flies_localizer && !c.localizer_valid) {
@@ -134,8 +137,9 @@ void ModeLogic::protect(const ModeConditions& c) {
     }
     set_lateral(c.on_ground ? LateralMode::kNone : LateralMode::kHeadingHold, "localizer flagged");
   }
-  // An armed localizer or glide slope waits while flagged: automatic_*() capture only a valid
-  // signal (no alert: it is not flown yet).
+  protect_vor(c);
+  // An armed localizer, VOR or glide slope waits while flagged: automatic_*() capture only a
+  // valid signal (no alert: it is not flown yet).
   if (state_.vertical == VerticalMode::kGlideSlope && !c.glide_slope_valid) {
     raise(kAlertGlideSlopeInvalid, "glide slope flagged");
     if (state_.autopilot_engaged) {
@@ -151,6 +155,45 @@ void ModeLogic::protect(const ModeConditions& c) {
     raise(kAlertAutopilotDisconnect, "attitude beyond the autopilot's authority");
     set_autopilot(false, "attitude beyond the autopilot's authority");
   }
+}
+
+void ModeLogic::protect_vor(const ModeConditions& c) {
+  if (state_.lateral != LateralMode::kLocalizer || !state_.vor) return;
+  if (!c.vor_tuned) {
+    vor_flagged("NAV1 no longer on a VOR", c);
+    return;
+  }
+  // Overhead, the bearing is lost (the receiver flags the cone) or swings (erratic); TO turning
+  // FROM is the passage itself. The course is held through it, never the flagged signal flown.
+  const bool overhead = c.vor_cone_of_confusion || (c.vor_valid && c.vor_station_passage);
+  if (overhead) {
+    if (!state_.vor_over_station) {
+      over_station_since_s_ = time_s_;
+      set_over_station(true, c.vor_cone_of_confusion ? "cone of confusion" : "station passage");
+    }
+    last_overhead_s_ = time_s_;
+  }
+  if (!c.vor_valid && !c.vor_cone_of_confusion) {
+    vor_flagged("VOR flagged", c);  // failed, off the air, out of range: not the station passage
+    return;
+  }
+  if (!state_.vor_over_station) return;
+  if (!c.vor_valid && time_s_ - over_station_since_s_ > vor_gains_.max_over_station_s) {
+    vor_flagged("VOR flagged beyond the station passage time", c);
+    return;
+  }
+  if (c.vor_valid && time_s_ - last_overhead_s_ >= vor_gains_.over_station_hold_s) {
+    set_over_station(false, "station passed: tracking the course");
+  }
+}
+
+void ModeLogic::vor_flagged(std::string_view reason, const ModeConditions& c) {
+  raise(kAlertVorInvalid, reason);
+  if (state_.autopilot_engaged) {
+    raise(kAlertAutopilotDisconnect, reason);
+    set_autopilot(false, reason);
+  }
+  set_lateral(c.on_ground ? LateralMode::kNone : LateralMode::kHeadingHold, reason);
 }
 
 void ModeLogic::disconnect(const McpButtons& buttons) {
@@ -220,7 +263,7 @@ void ModeLogic::engage(const McpButtons& buttons, const ModeConditions& c) {
 
 // ---- Buttons ---------------------------------------------------------------------------------
 
-void ModeLogic::lateral_buttons(const McpButtons& b) {
+void ModeLogic::lateral_buttons(const McpButtons& b, const ModeConditions& c) {
   const bool on_runway_modes =
       state_.lateral == LateralMode::kAlign || state_.lateral == LateralMode::kRollout;
   if (on_runway_modes) return;
@@ -235,7 +278,11 @@ void ModeLogic::lateral_buttons(const McpButtons& b) {
       arm_glide_slope(false, "VOR LOC (approach disarmed)");
     }
   }
-  if (b.approach) {
+  if (b.approach && c.vor_tuned) {
+    // A VOR has no glide slope: APP arms VOR/LOC alone (press again: disarm).
+    arm_glide_slope(false, "APP on a VOR (no glide slope)");
+    if (state_.lateral != LateralMode::kLocalizer) arm_localizer(!state_.lateral_armed.localizer, "APP on a VOR");
+  } else if (b.approach) {
     // First press arms what is not yet captured; a second press before G/S capture disarms.
     const bool disarm = state_.vertical_armed.glide_slope;
     arm_glide_slope(!disarm, "APP");
@@ -287,9 +334,14 @@ void ModeLogic::automatic_lateral(const ModeConditions& c) {
   if (state_.lateral_armed.localizer && c.localizer_valid && c.localizer_capture) {
     arm_localizer(false, "localizer capture point");
     set_lateral(LateralMode::kLocalizer, "localizer capture point");
+  } else if (state_.lateral_armed.localizer && c.vor_tuned && c.vor_valid && c.vor_capture) {
+    arm_localizer(false, "VOR capture point");
+    arm_glide_slope(false, "VOR captured (no glide slope)");
+    set_lateral(LateralMode::kLocalizer, "VOR capture point");
+    state_.vor = true;
   }
-  const bool autoland = state_.autopilot_engaged && (state_.vertical == VerticalMode::kGlideSlope ||
-                                                     state_.vertical == VerticalMode::kFlare);
+  const bool autoland = state_.autopilot_engaged && !state_.vor &&
+                        (state_.vertical == VerticalMode::kGlideSlope || state_.vertical == VerticalMode::kFlare);
   if (autoland && state_.lateral == LateralMode::kLocalizer && c.below_flare_arm_height &&
       !state_.lateral_armed.rollout) {
     arm_rollout(true, "below the flare-arm height");
@@ -329,7 +381,7 @@ void ModeLogic::automatic_vertical(const ModeConditions& c) {
     set_vertical(VerticalMode::kAltitudeHold, "within the altitude hold band");
   }
   if (armed.glide_slope && c.glide_slope_valid && c.glide_slope_capture &&
-      state_.lateral == LateralMode::kLocalizer) {
+      state_.lateral == LateralMode::kLocalizer && !state_.vor) {
     arm_glide_slope(false, "glide-slope capture point");
     arm_altitude_capture(false, "glide slope captured");
     set_vertical(VerticalMode::kGlideSlope, "glide-slope capture point");
@@ -414,6 +466,16 @@ void ModeLogic::set_lateral(LateralMode mode, std::string_view reason) {
   if (state_.lateral == mode) return;
   report(ModeTransition::Channel::kLateral, to_string(state_.lateral), to_string(mode), reason);
   state_.lateral = mode;
+  // A mode entered is the localizer's until automatic_lateral() says it captured a VOR.
+  set_over_station(false, reason);
+  state_.vor = false;
+}
+
+void ModeLogic::set_over_station(bool over, std::string_view reason) {
+  if (state_.vor_over_station == over) return;
+  state_.vor_over_station = over;
+  report(ModeTransition::Channel::kLateralSubmode, armed_name(!over, "OVER STATION"),
+         armed_name(over, "OVER STATION"), reason);
 }
 
 void ModeLogic::set_vertical(VerticalMode mode, std::string_view reason) {

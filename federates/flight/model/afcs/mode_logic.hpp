@@ -21,6 +21,12 @@
 //    a new MCP altitude are ignored and ALT ACQ is disarmed (no climb or descent to a newly
 //    selected altitude on the glide slope);
 //  - ALIGN, FLARE and ROLLOUT need the autopilot engaged (no flight-director autoland);
+//  - VOR/LOC flies what NAV1 receives: with a VOR tuned it captures the VOR's course (APP then
+//    arms no glide slope) and keeps to it over the station: on the cone-of-confusion flag, an
+//    erratic deviation or TO turning FROM it holds the course (the sub-mode "OVER STATION")
+//    until VorGains::over_station_hold after the last of these, then tracks the course again;
+//    any other flag, a flag outlasting max_over_station, or NAV1 no longer on a VOR disengages
+//    with the VOR FLAG alert like a flagged localizer;
 //  - a new MCP altitude during ALT ACQ returns to the mode it came from when the new altitude
 //    still lies ahead, else levels off in ALT HOLD.
 #pragma once
@@ -28,6 +34,7 @@
 #include "flight/model/afcs/afcs_inputs.hpp"
 #include "flight/model/afcs/afcs_modes.hpp"
 #include "flight/model/afcs/afcs_outputs.hpp"
+#include "flight/model/afcs/afcs_parameters.hpp"
 
 #include <functional>
 #include <string_view>
@@ -43,6 +50,11 @@ struct ModeConditions {
   bool glide_slope_valid = false;
   bool localizer_capture = false;    // the localizer capture point is reached
   bool glide_slope_capture = false;  // the glide-slope capture point is reached
+  bool vor_tuned = false;            // NAV1's course signal is a VOR (valid or flagged)
+  bool vor_valid = false;
+  bool vor_cone_of_confusion = false;  // the VOR flagged overhead the station
+  bool vor_capture = false;          // the VOR course's capture point is reached
+  bool vor_station_passage = false;  // the deviation erratic, or TO turned FROM
   bool altitude_capture = false;     // the altitude-capture law should start
   bool altitude_captured = false;    // within the hold band of the MCP altitude
   bool selected_altitude_changed = false;
@@ -70,6 +82,8 @@ struct ModeState {
   VerticalArmed vertical_armed;
   ThrustMode thrust = ThrustMode::kNone;
   std::uint32_t alerts = kAlertNone;
+  bool vor = false;               // VOR/LOC captured a VOR (else the localizer)
+  bool vor_over_station = false;  // ... and holds the course over the station
   friend bool operator==(const ModeState&, const ModeState&) = default;
 };
 
@@ -85,6 +99,7 @@ struct ModeTransition {
     kVerticalArmed,
     kThrust,
     kAlert,          // from "" to the alert's name (raised) or back (cleared)
+    kLateralSubmode, // VOR/LOC's "OVER STATION" (from "" to it and back)
   };
   double time_s = 0.0;
   Channel channel = Channel::kLateral;
@@ -101,8 +116,8 @@ class ModeLogic {
  public:
   using TransitionCallback = std::function<void(const ModeTransition&)>;
 
-  /// `on_transition` may be empty (no reporting).
-  explicit ModeLogic(TransitionCallback on_transition = {});
+  /// `on_transition` may be empty (no reporting); `vor`: the station passage's times.
+  explicit ModeLogic(TransitionCallback on_transition = {}, const VorGains& vor = {});
 
   /// One frame: acknowledgements, protections, disconnects, engagement, buttons, then the
   /// automatic transitions, in that order. Returns the new state.
@@ -127,7 +142,9 @@ class ModeLogic {
   void engage(const McpButtons& buttons, const ModeConditions& c);
   void flight_director(const McpSelections& mcp);
   void autothrottle_switch(const McpSelections& mcp, const ModeConditions& c);
-  void lateral_buttons(const McpButtons& buttons);
+  void protect_vor(const ModeConditions& c);
+  void vor_flagged(std::string_view reason, const ModeConditions& c);
+  void lateral_buttons(const McpButtons& buttons, const ModeConditions& c);
   void vertical_buttons(const McpButtons& buttons, const ModeConditions& c);
   void thrust_buttons(const McpButtons& buttons);
   void go_around(const McpButtons& buttons, const ModeConditions& c);
@@ -141,6 +158,7 @@ class ModeLogic {
   void set_lateral(LateralMode mode, std::string_view reason);
   void set_vertical(VerticalMode mode, std::string_view reason);
   void set_thrust(ThrustMode mode, std::string_view reason);
+  void set_over_station(bool over, std::string_view reason);
   void arm_localizer(bool armed, std::string_view reason);
   void arm_rollout(bool armed, std::string_view reason);
   void arm_altitude_capture(bool armed, std::string_view reason);
@@ -153,11 +171,14 @@ class ModeLogic {
   void enter_climb_or_descent_thrust(bool climbing, std::string_view reason);
 
   TransitionCallback on_transition_;
+  VorGains vor_gains_;
   ModeState state_;
   VerticalMode capture_from_ = VerticalMode::kNone;
   bool hold_present_altitude_ = false;
   bool autothrottle_tripped_ = false;  // disengaged: re-engages only after the switch is cycled
   double time_s_ = 0.0;
+  double over_station_since_s_ = 0.0;  // OVER STATION entered
+  double last_overhead_s_ = 0.0;       // the last cue of the station passage
 };
 
 }  // namespace fedsim::flight::afcs

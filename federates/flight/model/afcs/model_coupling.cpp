@@ -110,6 +110,43 @@ AfcsIlsSignals ils_signals(const nav::LocalizerReading& localizer, const nav::Gl
   return s;
 }
 
+namespace {
+VorToFrom to_from(nav::ToFrom flag) {
+  switch (flag) {
+    case nav::ToFrom::kTo: return VorToFrom::kTo;
+    case nav::ToFrom::kFrom: return VorToFrom::kFrom;
+    case nav::ToFrom::kOff: break;
+  }
+  return VorToFrom::kOff;
+}
+}  // namespace
+
+AfcsVorSignals vor_signals(const nav::NavReading& nav, double full_scale_rad) {
+  AfcsVorSignals v;
+  v.tuned = nav.signal == nav::NavSignal::kVor;
+  if (!v.tuned) return v;
+  v.valid = nav.valid();
+  v.cone_of_confusion = nav.status == nav::SignalStatus::kConeOfConfusion;
+  if (v.valid) {
+    v.deviation = nav.vor.course_deviation;
+    v.full_scale_rad = full_scale_rad;
+    v.course_true_rad = nav.vor.course_true_rad;
+    v.to_from = to_from(nav.vor.to_from);
+  }
+  v.dme_valid = nav.dme.valid();
+  if (v.dme_valid) v.dme_slant_range_m = nav.dme.slant_range_m;
+  return v;
+}
+
+AfcsIlsSignals nav1_signals(const nav::NavReading& nav, const nav::AircraftPose& pose, double vor_full_scale_rad) {
+  if (nav.signal == nav::NavSignal::kLocalizer && nav.approach != nullptr) {
+    return ils_signals(nav.localizer, nav.glide_slope, *nav.approach, nav::approach_geometry(*nav.approach), pose);
+  }
+  AfcsIlsSignals s;
+  s.vor = vor_signals(nav, vor_full_scale_rad);
+  return s;
+}
+
 AircraftControls apply_afcs_outputs(const AfcsOutputs& afcs, const AircraftControls& pilot,
                                     double trim_position) {
   AircraftControls c = pilot;

@@ -4,6 +4,7 @@
 //
 //   AircraftOutputs (+ the pack's gear geometry) -> AfcsAircraftState and nav::AircraftPose;
 //   LocalizerReading, GlideSlopeReading (+ the approach geometry) -> AfcsIlsSignals;
+//   NavReading (NAV1: a VOR with its DME, or an ILS) -> AfcsIlsSignals (its vor part for a VOR);
 //   AfcsOutputs -> AircraftControls: the engaged channels replace the pilot's.
 #pragma once
 
@@ -17,6 +18,7 @@
 #include "nav/model/radio/approach_geometry.hpp"
 #include "nav/model/radio/glide_slope_receiver.hpp"
 #include "nav/model/radio/localizer_receiver.hpp"
+#include "nav/model/radio/nav_radio.hpp"
 
 #include <vector>
 
@@ -51,6 +53,16 @@ nav::AircraftPose nav_pose(const AircraftOutputs& outputs);
 AfcsIlsSignals ils_signals(const nav::LocalizerReading& localizer, const nav::GlideSlopeReading& glide_slope,
                            const nav::IlsApproach& approach, const nav::ApproachGeometry& geometry,
                            const nav::AircraftPose& pose);
+
+/// The AFCS's VOR port from a NAV receiver's reading: tuned when its course signal is a VOR,
+/// the numbers only when valid (the cone-of-confusion flag said as such), the DME when received.
+/// `full_scale_rad`: the receiver's CDI full scale (nav_radio VorReceiverSettings).
+AfcsVorSignals vor_signals(const nav::NavReading& nav, double full_scale_rad);
+
+/// NAV1's reading as the AFCS's NAV port: a localizer with its glide slope (ils_signals() on the
+/// received approach) or a VOR (vor_signals()); the other part flagged.
+AfcsIlsSignals nav1_signals(const nav::NavReading& nav, const nav::AircraftPose& pose,
+                            double vor_full_scale_rad = nav::VorReceiverSettings{}.full_scale_rad);
 
 /// The pilot's controls with the AFCS's engaged channels in their place. The pitch-trim
 /// command runs the trim towards its travel end in the commanded sense (the trim system moves

@@ -94,6 +94,38 @@ TEST(Afcs, ABadSampleDisengagesAndReachesNoLaw) {
   EXPECT_EQ(afcs.last_input_problem(), "ils.localizer_deviation");
 }
 
+TEST(Afcs, VorInputsAreCheckedOnlyWhenValidAndNamed) {
+  Afcs afcs(AfcsParameters{}, 0.02);
+  AfcsInputs in = cruise_frame(0.0);
+  in.ils.vor.tuned = true;
+  in.ils.vor.valid = false;  // flagged: its numbers are not used, nor checked
+  in.ils.vor.deviation = std::numeric_limits<double>::quiet_NaN();
+  afcs.step(in);
+  EXPECT_TRUE(afcs.last_input_problem().empty());
+  const auto problem = [&](auto&& spoil) {
+    AfcsInputs bad = cruise_frame(0.02);
+    bad.ils.vor.tuned = bad.ils.vor.valid = true;
+    bad.ils.vor.to_from = VorToFrom::kFrom;
+    spoil(bad.ils.vor);
+    afcs.step(bad);
+    return std::string(afcs.last_input_problem());
+  };
+  EXPECT_EQ(problem([](AfcsVorSignals&) {}), "");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) { v.deviation = 1.5; }), "ils.vor.deviation");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) { v.full_scale_rad = 0.0; }), "ils.vor.full_scale_rad");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) { v.course_true_rad = INFINITY; }), "ils.vor.course_true_rad");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) { v.tuned = false; }), "ils.vor.tuned");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) { v.to_from = static_cast<VorToFrom>(7); }), "ils.vor.to_from");
+  EXPECT_EQ(problem([](AfcsVorSignals& v) {
+              v.dme_valid = true;
+              v.dme_slant_range_m = -1.0;
+            }),
+            "ils.vor.dme_slant_range_m");
+  AfcsParameters p;
+  p.vor.nominal_distance_m = 1.0;  // below the schedule's minimum
+  EXPECT_THROW(Afcs(p, 0.02), std::invalid_argument);
+}
+
 TEST(Afcs, ModeChangesAreFaded) {
   // Wings level in HDG HOLD, then HDG SEL 90 deg to the right: the bank command moves at the
   // bank-rate limit, the pitch command does not step when ALT HLD replaces CWS P.

@@ -304,5 +304,146 @@ TEST(ModeLogic, EveryChangeIsReportedOnceInOrder) {
   for (const auto& t : r.log) EXPECT_FALSE(t.reason.empty());
 }
 
+// ---- VOR/LOC on a VOR ------------------------------------------------------------------------
+
+/// Engaged, NAV1 on a valid VOR, VOR/LOC armed and captured at t = 1 s; frames then at `t`.
+struct VorRecorder {
+  std::vector<ModeTransition> log;
+  ModeLogic logic{[this](const ModeTransition& t) { log.push_back(t); }};
+  McpSelections mcp;
+  static ModeConditions on_vor() {
+    ModeConditions c;
+    c.wings_level = true;
+    c.vor_tuned = c.vor_valid = true;
+    return c;
+  }
+  const ModeState& at(double t, const ModeConditions& c, McpButtons b = {}) { return logic.update(t, b, mcp, c); }
+  void capture() {
+    McpButtons cmd;
+    cmd.autopilot_engage = true;
+    at(0.0, on_vor(), cmd);
+    McpButtons vor_loc;
+    vor_loc.vor_localizer = true;
+    at(0.5, on_vor(), vor_loc);
+    ModeConditions c = on_vor();
+    c.vor_capture = true;
+    at(1.0, c);
+  }
+};
+
+TEST(ModeLogic, VorLocCapturesOnlyAValidVorAndApproachArmsNoGlideSlopeOnIt) {
+  VorRecorder r;
+  McpButtons cmd, app;
+  cmd.autopilot_engage = true;
+  app.approach = true;
+  r.at(0.0, VorRecorder::on_vor(), cmd);
+  const ModeState& armed = r.at(0.1, VorRecorder::on_vor(), app);
+  EXPECT_TRUE(armed.lateral_armed.localizer);
+  EXPECT_FALSE(armed.vertical_armed.glide_slope);  // a VOR has none
+  ModeConditions c = VorRecorder::on_vor();
+  c.vor_capture = true;
+  c.vor_valid = false;
+  EXPECT_EQ(r.at(0.2, c).lateral, LateralMode::kHeadingHold);  // flagged: never captured
+  EXPECT_EQ(r.logic.state().alerts, kAlertNone);                 // ... nor alerted (not flown)
+  c.vor_valid = true;  // negative control
+  const ModeState& captured = r.at(0.3, c);
+  EXPECT_EQ(captured.lateral, LateralMode::kLocalizer);
+  EXPECT_TRUE(captured.vor);
+  EXPECT_FALSE(captured.lateral_armed.localizer);
+  // A glide slope (there is none on a VOR: defence in depth) is not captured on it.
+  VorRecorder g;
+  g.at(0.0, VorRecorder::on_vor(), cmd);
+  ModeConditions loc = VorRecorder::on_vor();
+  loc.vor_tuned = loc.vor_valid = false;
+  loc.localizer_valid = loc.glide_slope_valid = true;
+  g.at(0.1, loc, app);  // APP on a localizer: G/S armed
+  ModeConditions vor = VorRecorder::on_vor();
+  vor.vor_capture = vor.glide_slope_valid = vor.glide_slope_capture = true;
+  const ModeState& s = g.at(0.2, vor);
+  EXPECT_TRUE(s.vor);
+  EXPECT_FALSE(s.vertical_armed.glide_slope);
+  EXPECT_NE(s.vertical, VerticalMode::kGlideSlope);
+}
+
+TEST(ModeLogic, OverTheStationTheVorCourseIsHeldThroughTheConeThenTrackedAgain) {
+  const VorGains gains;
+  VorRecorder r;
+  r.capture();
+  ModeConditions cone = VorRecorder::on_vor();
+  cone.vor_valid = false;
+  cone.vor_cone_of_confusion = true;
+  for (double t = 10.0; t < 30.0; t += 0.5) {
+    const ModeState& s = r.at(t, cone);
+    ASSERT_TRUE(s.vor_over_station) << t;
+    ASSERT_TRUE(s.autopilot_engaged) << t;
+    ASSERT_EQ(s.alerts, kAlertNone) << t;
+  }
+  // Valid again: the course is still held for the hold time after the last cue (t = 29.5 s).
+  EXPECT_TRUE(r.at(30.0, VorRecorder::on_vor()).vor_over_station);
+  EXPECT_TRUE(r.at(29.5 + gains.over_station_hold_s - 0.1, VorRecorder::on_vor()).vor_over_station);
+  const ModeState& s = r.at(29.5 + gains.over_station_hold_s, VorRecorder::on_vor());
+  EXPECT_FALSE(s.vor_over_station);
+  EXPECT_EQ(s.lateral, LateralMode::kLocalizer);
+  EXPECT_TRUE(s.vor);
+  std::vector<std::string> seen;
+  for (const auto& t : r.log) {
+    if (t.channel == ModeTransition::Channel::kLateralSubmode) seen.push_back(std::string(t.from) + ">" + std::string(t.to));
+  }
+  EXPECT_EQ(seen, (std::vector<std::string>{">OVER STATION", "OVER STATION>"}));
+  // An erratic deviation (or TO turning FROM) is a cue as well.
+  ModeConditions erratic = VorRecorder::on_vor();
+  erratic.vor_station_passage = true;
+  EXPECT_TRUE(r.at(100.0, erratic).vor_over_station);
+}
+
+TEST(ModeLogic, AFlaggedVorOtherThanTheConeDisengagesWithAnAlert) {
+  ModeConditions failed = VorRecorder::on_vor();
+  failed.vor_valid = false;  // receiver failed, off the air, out of range: not the cone
+  ModeConditions cone = failed;
+  cone.vor_cone_of_confusion = true;
+  ModeConditions retuned = VorRecorder::on_vor();
+  retuned.vor_tuned = retuned.vor_valid = false;
+  const auto expect_disengaged = [](const ModeState& s) {
+    EXPECT_FALSE(s.autopilot_engaged);
+    EXPECT_TRUE(s.alerts & kAlertVorInvalid);
+    EXPECT_TRUE(s.alerts & kAlertAutopilotDisconnect);
+    EXPECT_EQ(s.lateral, LateralMode::kHeadingHold);
+    EXPECT_FALSE(s.vor);
+    EXPECT_FALSE(s.vor_over_station);
+  };
+  {  // tracking
+    VorRecorder r;
+    r.capture();
+    expect_disengaged(r.at(5.0, failed));
+  }
+  {  // retuned to a localizer (or nothing)
+    VorRecorder r;
+    r.capture();
+    expect_disengaged(r.at(5.0, retuned));
+  }
+  {  // over the station, a failure is not waited out
+    VorRecorder r;
+    r.capture();
+    EXPECT_TRUE(r.at(5.0, cone).vor_over_station);
+    expect_disengaged(r.at(6.0, failed));
+  }
+  {  // a cone flag that outlasts any station passage
+    const VorGains gains;
+    VorRecorder r;
+    r.capture();
+    r.at(5.0, cone);
+    EXPECT_TRUE(r.at(5.0 + gains.max_over_station_s, cone).autopilot_engaged);
+    expect_disengaged(r.at(5.1 + gains.max_over_station_s, cone));
+  }
+  {  // the second disconnect press acknowledges it
+    VorRecorder r;
+    r.capture();
+    r.at(5.0, failed);
+    McpButtons off;
+    off.autopilot_disconnect = true;
+    EXPECT_EQ(r.at(6.0, failed, off).alerts, kAlertNone);
+  }
+}
+
 }  // namespace
 }  // namespace fedsim::flight::afcs
