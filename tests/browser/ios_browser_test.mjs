@@ -167,6 +167,21 @@ try {
               `(configured ${stats.hz}/s), ${stats.pushes} received`);
   check(stats.push > 0.8 * stats.hz, 'the server pushes at its rate', `${stats.push.toFixed(2)} of ${stats.hz}/s`);
   check(stats.fps > 0, 'the page draws frames', `${stats.fps} fps`);
+  // A scenario from the page: the C172 engine failure (its 10 s event is past: it fires at once),
+  // confirmed by the engine's own report; stopped from the page before its `stop` ends the run.
+  await page.selectOption('#form-scenario select[name=name]', 'c172_engine_failure.yaml');
+  await page.click('#form-scenario button[name=start]');
+  const failed = await waitFor('the scenario\'s failure confirmed', () => fedsim(() =>
+    window.fedsim.state.commands.find((c) => c.text === 'fail engine1' && c.status !== 'pending')));
+  check(failed.status === 'confirmed', 'a scenario run from the page fails the engine', failed.evidence);
+  const fired = await fedsim(() => window.fedsim.state.scenario.fired);
+  check(fired.some((f) => f.includes('fail engine1')), 'the page lists what the scenario did', fired.join(' | '));
+  await page.click('#form-scenario button[name=stop]');
+  await waitFor('the scenario stopped', () => fedsim(() => !window.fedsim.state.scenario.running));
+  await page.selectOption('#form-failure select[name=system]', 'engine1');
+  await page.click('#form-failure button[name=restore]');
+  await sleep(1500);
+
   if (args.screenshot) {
     await page.screenshot({ path: args.screenshot, fullPage: true });
     console.log(`screenshot ${args.screenshot}`);

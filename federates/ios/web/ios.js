@@ -62,6 +62,7 @@ function onState(s) {
   updatePlotChoices(s);
   updatePicture(s);
   updateReplay(s);
+  updateScenario(s);
 }
 
 // ---- header and tables ----
@@ -139,6 +140,34 @@ function wireForms() {
   $('form-time').onsubmit = (e) => {
     e.preventDefault();
     sendCommand({ command: 'time_of_day', utc: e.target.utc.value.trim(), lights: e.target.lights.checked });
+  };
+}
+
+// ---- scenarios (seed 9.8) ----
+
+let scenarioFiles = '';
+function updateScenario(s) {
+  const sc = s.scenario;
+  if (!sc) return;
+  const files = sc.files.join(',');
+  if (files !== scenarioFiles) {
+    scenarioFiles = files;
+    $('form-scenario').elements.name.innerHTML = sc.files.map((f) => `<option>${esc(f)}</option>`).join('');
+  }
+  $('scenario-status').textContent = sc.running ? `running ${sc.name}` + (sc.waiting_for && sc.waiting_for.length ?
+    `; waiting for ${sc.waiting_for.join(', ')}` : '') : (sc.name ? `${sc.name} ended` : 'none running');
+  $('scenario-fired').innerHTML = (sc.fired || []).map((f) => `<li>${esc(f)}</li>`).join('');
+}
+
+function wireScenario() {
+  $('form-scenario').onsubmit = async (e) => {
+    e.preventDefault();
+    const stop = e.submitter && e.submitter.name === 'stop';
+    $('command-error').textContent = '';
+    const response = await fetch('api/scenario', { method: 'POST',
+      body: JSON.stringify(stop ? { action: 'stop' } : { action: 'start', name: e.target.elements.name.value }) });
+    const reply = await response.json();
+    if (!response.ok) $('command-error').textContent = reply.error;
   };
 }
 
@@ -552,6 +581,7 @@ function frame(now) {
 }
 
 wireForms();
+wireScenario();
 wireReplay();
 wireMap();
 wirePlots();
