@@ -160,6 +160,28 @@ TEST_F(ControlLoadingComponentTest, ANanSampleAndTheInstructorCutItOffByName) {
   EXPECT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_SAFE);  // stays cut off until restored
 }
 
+// Lost ticks: the host calls on_ticks_stopped() once no tick came for tick_watchdog_periods()
+// frame periods (1.5: half a frame after the tick that did not come); the SAFE state is written
+// in that very call, not in a frame that is not coming. (Over DDS: Federation.StoppedTicks...)
+TEST_F(ControlLoadingComponentTest, LostTicksCutItOffInTheWatchdogsOwnCall) {
+  EXPECT_EQ(loader_.tick_watchdog_periods(), 1.5);
+  seconds(1.0);
+  ASSERT_EQ(reader_.latest.status(), msg::CONTROL_LOADING_ACTIVE);
+  std::vector<msg::ControlLoadingStatus> written;
+  composition_.on_written(runtime::topics::control_loading_state,
+                          std::function<void(const msg::ControlLoadingState&)>(
+                              [&](const msg::ControlLoadingState& s) { written.push_back(s.status()); }));
+  loader_.on_ticks_stopped(composition_.last_frame(), 0.030);
+  ASSERT_EQ(written.size(), 1u) << "the cut-off must go out without another frame";
+  EXPECT_EQ(written[0], msg::CONTROL_LOADING_SAFE);
+  ASSERT_NE(fault("control_loading_cut_off"), nullptr);
+  EXPECT_NE(fault("control_loading_cut_off")->last.find("no frame tick for 30 ms"), std::string::npos)
+      << fault("control_loading_cut_off")->last;
+  // Negative control: while it is cut off, the watchdog has nothing more to write.
+  loader_.on_ticks_stopped(composition_.last_frame(), 0.050);
+  EXPECT_EQ(written.size(), 1u);
+}
+
 TEST(ShakerSchedule, ThePacksStallWarningAnglesScheduleTheShakerOnTheFlaps) {
   ControlLoadingSetup setup;
   EXPECT_TRUE(std::isnan(scheduled_shaker_alpha_rad(setup, 0.5)));  // no --aircraft

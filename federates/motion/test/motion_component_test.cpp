@@ -130,6 +130,24 @@ TEST_F(MotionComponentTest, ASilentAircraftStateCutsTheMotionOff) {
   EXPECT_NE(fault("input_silent")->last.find("silent for 10 frames"), std::string::npos) << fault("input_silent")->last;
 }
 
+// Lost ticks: 1.5 frame periods without a tick, the host calls on_ticks_stopped(); the platform
+// trips in that call and the park's first step goes out then (30 ms: one frame period of
+// silence past the tick due at 20 ms), not in a frame that is not coming.
+TEST_F(MotionComponentTest, LostTicksStartTheParkInTheWatchdogsOwnCall) {
+  EXPECT_EQ(motion_.tick_watchdog_periods(), 1.5);
+  engage();
+  std::vector<msg::MotionStatus> written;
+  composition_.on_written(runtime::topics::motion_state,
+                          std::function<void(const msg::MotionPlatformState&)>(
+                              [&](const msg::MotionPlatformState& s) { written.push_back(s.status()); }));
+  motion_.on_ticks_stopped(composition_.last_frame(), 0.030);
+  ASSERT_EQ(written.size(), 1u);  // one park step for 30 ms of silence at 50 Hz
+  EXPECT_EQ(written[0], msg::MOTION_FAULT);
+  // The park goes on at the frame period for as long as the silence lasts.
+  motion_.on_ticks_stopped(composition_.last_frame(), 0.200);
+  EXPECT_EQ(written.size(), 10u);
+}
+
 TEST_F(MotionComponentTest, TheInstructorCutsItOffAndRestoresIt) {
   engage();
   composition_.command(motion_failure(true));
