@@ -49,10 +49,39 @@ afcs::McpSelections mcp_selections(const msg::McpPanel& m) {
   s.flight_director_on = m.flight_director_on();
   s.autothrottle_armed = m.autothrottle_armed();
   s.autobrake_setting = m.autobrake();
-  // Control-wheel steering forces: no force transducer on the topic yet (hands off).
+  // Control-wheel steering: from the pilot's forces, not the panel (cws_inputs()).
   s.pilot_pitch_input = 0.0;
   s.pilot_roll_input = 0.0;
   return s;
+}
+
+double cws_input_from_force(double force_n, double breakout_n, double full_n) {
+  if (!std::isfinite(force_n)) return 0.0;
+  const double beyond = std::abs(force_n) - breakout_n;
+  if (beyond <= 0.0) return 0.0;
+  return std::copysign(std::min(1.0, beyond / (full_n - breakout_n)), force_n);
+}
+
+std::optional<std::string> check_pilot_forces(const msg::PilotControls& pilot) {
+  static constexpr const char* kAxis[3] = {"column", "wheel", "pedals"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double f = pilot.pilot_force_n()[i];
+    if (!in(f, -kMaxPilotForceN, kMaxPilotForceN)) {
+      return std::string("pilot_force_n[") + std::to_string(i) + "] (" + kAxis[i] + ") = " + std::to_string(f) +
+             " (must be finite, within +-2000 N)";
+    }
+  }
+  return std::nullopt;
+}
+
+CwsInputs cws_inputs(const msg::PilotControls& pilot, const afcs::AfcsParameters& p) {
+  CwsInputs c;
+  if ((pilot.discretes() & msg::DISCRETE_FORCE_SENSORS) == 0) return c;
+  if ((pilot.discretes() & msg::DISCRETE_INPUTS_INVALID) != 0) return c;
+  // Column + push = nose down: the pitch input (+ nose up) has the opposite sign.
+  c.pitch = -cws_input_from_force(pilot.pilot_force_n()[0], p.cws_breakout_force_n, p.cws_full_column_force_n);
+  c.roll = cws_input_from_force(pilot.pilot_force_n()[1], p.cws_breakout_force_n, p.cws_full_wheel_force_n);
+  return c;
 }
 
 afcs::McpSelections mcp_before_first_sample(const afcs::AfcsAircraftState& a) {

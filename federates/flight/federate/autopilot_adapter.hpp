@@ -1,5 +1,5 @@
-// The AFCS's translation layer in the flight federate (no DDS calls): the mode control panel of
-// fedsim/pilot_controls and NAV1's ILS or VOR readings of fedsim/navigation_state in, the FMA, the
+// The AFCS's translation layer in the flight federate (no DDS calls): the mode control panel and
+// the force sensors (control-wheel steering) of fedsim/pilot_controls and NAV1's ILS or VOR readings of fedsim/navigation_state in, the FMA, the
 // flight-director bars and the AFCS's commands out on fedsim/autopilot_state.
 //
 // Buttons travel as press counters (controls.idl McpPanel): McpPressTracker turns the increase
@@ -22,8 +22,28 @@ namespace fedsim::flight {
 /// ranges, afcs_inputs.hpp), or nullopt if it can.
 std::optional<std::string> check_mcp(const msg::McpPanel& mcp);
 
-/// The MCP selections (held values) of a sample checked by check_mcp().
+/// The MCP selections (held values) of a sample checked by check_mcp(); the CWS inputs are
+/// hands off (the caller sets them from cws_inputs()).
 afcs::McpSelections mcp_selections(const msg::McpPanel& mcp);
+/// Control-wheel steering: the AFCS's pilot_pitch_input / pilot_roll_input (-1..1) from the force
+/// sensors of a pilot-controls sample (pilot_force_n: column + push, wheel + right).
+struct CwsInputs {
+  double pitch = 0.0;  // + nose up (a pull: the column's force negative)
+  double roll = 0.0;   // + right wing down (the wheel's force positive)
+};
+/// One axis: 0 within +-breakout, then linear to +-1 at +-full, held beyond (same sign as the
+/// force). NaN gives 0.
+double cws_input_from_force(double force_n, double breakout_n, double full_n);
+/// Why the force sensors' readings of a sample cannot be used (a non-finite value, or one beyond
+/// kMaxPilotForceN on any axis, pedals included), or nullopt. Only meaningful with
+/// DISCRETE_FORCE_SENSORS.
+std::optional<std::string> check_pilot_forces(const msg::PilotControls& pilot);
+inline constexpr double kMaxPilotForceN = 2000.0;
+/// The CWS inputs of a sample checked by check_pilot_forces(): hands off (0, 0) without
+/// DISCRETE_FORCE_SENSORS (no sensors: pilot_force_n means nothing) or with
+/// DISCRETE_INPUTS_INVALID (the I/O federate's device is lost).
+CwsInputs cws_inputs(const msg::PilotControls& pilot, const afcs::AfcsParameters& parameters);
+
 /// The selections before any panel sample arrived: the aircraft's own heading, altitude and
 /// speed (clamped into the MCP's ranges), so that the AFCS sees a valid panel.
 afcs::McpSelections mcp_before_first_sample(const afcs::AfcsAircraftState& aircraft);

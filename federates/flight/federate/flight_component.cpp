@@ -115,6 +115,24 @@ void FlightComponent::take_mcp(const runtime::FrameContext& frame) {
   pending_presses_ |= mcp_presses_.presses(pilot.mcp());
 }
 
+void FlightComponent::take_pilot_forces(const runtime::FrameContext& frame) {
+  const msg::PilotControls* sample = pilot_controls_.latest();
+  if (sample == nullptr || pilot_controls_.updates() == forces_seen_) return;
+  forces_seen_ = pilot_controls_.updates();
+  const msg::PilotControls& pilot = *sample;
+  const bool sensors = (pilot.discretes() & msg::DISCRETE_FORCE_SENSORS) != 0 &&
+                       (pilot.discretes() & msg::DISCRETE_INPUTS_INVALID) == 0;
+  if (sensors) {
+    if (const auto problem = check_pilot_forces(pilot)) {
+      report_fault("input_rejected", "frame " + std::to_string(frame.frame) + ": pilot_controls of frame " +
+                                         std::to_string(pilot.stamp().frame()) + " " + *problem +
+                                         " (kept the previous control-wheel steering input)");
+      return;
+    }
+  }
+  cws_ = cws_inputs(pilot, *setup_.autopilot);  // hands off without the sensors
+}
+
 afcs::AfcsIlsSignals FlightComponent::nav1_ils() const {
   const msg::NavigationState* nav = navigation_state_->latest();
   if (nav == nullptr || nav->aircraft_id() != setup_.aircraft_id) return {};
@@ -143,6 +161,8 @@ void FlightComponent::fly_autopilot(const runtime::FrameContext& frame) {
   in.buttons = pending_presses_;
   pending_presses_ = {};
   in.mcp = have_valid_mcp_ ? mcp_selections(last_valid_mcp_) : mcp_before_first_sample(in.aircraft);
+  in.mcp.pilot_pitch_input = cws_.pitch;  // control-wheel steering: the pilot's forces
+  in.mcp.pilot_roll_input = cws_.roll;
   in.failures = afcs_failures_;
   const afcs::AfcsOutputs& out = afcs_->step(in);
   model.set_controls(afcs::apply_afcs_outputs(out, pilot, o.pitch_trim_norm));
@@ -185,10 +205,12 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
     dropped_steps_seen_ = 0;
     if (afcs_) afcs_->reset();
     pending_presses_ = {};
+    cws_ = {};
   } else if (frame.running()) {
     apply_pilot_controls(frame);
     if (setup_.autopilot) {
       take_mcp(frame);
+      take_pilot_forces(frame);
       fly_autopilot(frame);
     }
     model.step(frame.dt_s);

@@ -6,14 +6,16 @@
 // gate), weather, failures (engine1..4, autopilot, autothrottle). Faults (counted, in the
 // federate status and the summary): "numerical" - the model dropped a step that would have
 // produced a non-finite state; "input_rejected" - a pilot-controls sample with a non-finite or
-// out-of-range value (the previous controls are kept), or a bad MCP panel (the previous one is
+// out-of-range value (the previous controls are kept), a bad MCP panel (the previous one is
+// kept), or bad force-sensor readings (non-finite or beyond 2000 N: the previous CWS inputs are
 // kept).
 //
 // With the autopilot hosted (--autopilot, model/afcs/README.md "Where the AFCS runs"), each RUN
 // frame, after the pilot's controls are set and before the model steps: the AFCS reads the
 // aircraft (the model's outputs), NAV1's ILS readings (fedsim/navigation_state of frame N-1),
-// the MCP (the panel in fedsim/pilot_controls), steps, and its engaged channels replace the
-// pilot's; every mode change is logged; fedsim/autopilot_state carries the FMA every frame.
+// the MCP (the panel in fedsim/pilot_controls) and the control-wheel steering inputs (the
+// column and wheel forces of pilot_force_n, with DISCRETE_FORCE_SENSORS; hands off without),
+// steps, and its engaged channels replace the pilot's; every mode change is logged; fedsim/autopilot_state carries the FMA every frame.
 #pragma once
 
 #include "flight/federate/replay_playback.hpp"
@@ -57,6 +59,10 @@ class FlightComponent final : public runtime::Component {
   /// The pilot's wing-leveller switch (discrete bit) to the pack's wing leveller, logged on change.
   void apply_wing_leveller_switch(const runtime::FrameContext& frame);
   void take_mcp(const runtime::FrameContext& frame);
+  /// The control-wheel steering inputs from the force sensors of a new pilot-controls sample
+  /// (hands off without DISCRETE_FORCE_SENSORS); bad readings are rejected and counted
+  /// ("input_rejected"), the previous inputs kept.
+  void take_pilot_forces(const runtime::FrameContext& frame);
   void fly_autopilot(const runtime::FrameContext& frame);
   afcs::AfcsIlsSignals nav1_ils() const;
   void log_transition(const afcs::ModeTransition& t);
@@ -102,6 +108,8 @@ class FlightComponent final : public runtime::Component {
   afcs::McpButtons pending_presses_;     // seen in a sample, pressed in the next RUN frame
   msg::McpPanel last_valid_mcp_;
   bool have_valid_mcp_ = false;
+  std::uint64_t forces_seen_ = 0;        // pilot_controls_.updates() when the forces were last read
+  CwsInputs cws_;                        // the pilot's column and wheel forces as CWS inputs
   afcs::AfcsFailures afcs_failures_;
   std::uint32_t transitions_ = 0;
   msg::AutopilotState autopilot_sample_;

@@ -260,3 +260,88 @@ TEST(AutopilotState, CarriesTheFmaAndCommandsOfTheAfcs) {
 
 }  // namespace
 }  // namespace fedsim::flight
+
+namespace fedsim::flight {
+namespace {
+
+msg::PilotControls with_forces(float column_n, float wheel_n, float pedals_n, bool sensors = true) {
+  msg::PilotControls c;
+  c.pilot_force_n()[0] = column_n;
+  c.pilot_force_n()[1] = wheel_n;
+  c.pilot_force_n()[2] = pedals_n;
+  c.discretes(sensors ? msg::DISCRETE_FORCE_SENSORS : 0u);
+  return c;
+}
+
+TEST(CwsForces, DeadBandThenLinearToFullScaleThenHeld) {
+  EXPECT_EQ(cws_input_from_force(0.0, 10.0, 110.0), 0.0);
+  EXPECT_EQ(cws_input_from_force(9.9, 10.0, 110.0), 0.0);    // within the breakout
+  EXPECT_EQ(cws_input_from_force(-10.0, 10.0, 110.0), 0.0);
+  EXPECT_NEAR(cws_input_from_force(60.0, 10.0, 110.0), 0.5, 1e-12);
+  EXPECT_NEAR(cws_input_from_force(-60.0, 10.0, 110.0), -0.5, 1e-12);
+  EXPECT_NEAR(cws_input_from_force(110.0, 10.0, 110.0), 1.0, 1e-12);
+  EXPECT_EQ(cws_input_from_force(900.0, 10.0, 110.0), 1.0);  // clamped
+  EXPECT_EQ(cws_input_from_force(-900.0, 10.0, 110.0), -1.0);
+  EXPECT_EQ(cws_input_from_force(std::nan(""), 10.0, 110.0), 0.0);
+}
+
+TEST(CwsForces, ColumnPullIsNoseUpWheelRightIsRightWingDown) {
+  const afcs::AfcsParameters p;
+  const double column_mid = 0.5 * (p.cws_breakout_force_n + p.cws_full_column_force_n);
+  const double wheel_mid = 0.5 * (p.cws_breakout_force_n + p.cws_full_wheel_force_n);
+  // Column + push on the topic: a pull (negative) is nose up (+ pitch input).
+  CwsInputs pull = cws_inputs(with_forces(static_cast<float>(-column_mid), static_cast<float>(wheel_mid), 0), p);
+  EXPECT_NEAR(pull.pitch, 0.5, 1e-6);
+  EXPECT_NEAR(pull.roll, 0.5, 1e-6);
+  CwsInputs push = cws_inputs(with_forces(static_cast<float>(p.cws_full_column_force_n), -300.0f, 0), p);
+  EXPECT_NEAR(push.pitch, -1.0, 1e-9);
+  EXPECT_EQ(push.roll, -1.0);  // beyond full scale: held at full input
+  // Within the breakout: hands off.
+  CwsInputs resting = cws_inputs(with_forces(5.0f, -5.0f, 40.0f), p);
+  EXPECT_EQ(resting.pitch, 0.0);
+  EXPECT_EQ(resting.roll, 0.0);
+  // The pedals' force steers nothing.
+  EXPECT_EQ(cws_inputs(with_forces(0.0f, 0.0f, 300.0f), p).roll, 0.0);
+}
+
+TEST(CwsForces, WithoutTheForceSensorsBitOrWithTheDeviceLostItIsHandsOff) {
+  const afcs::AfcsParameters p;
+  const CwsInputs no_sensors = cws_inputs(with_forces(-100.0f, 50.0f, 0, false), p);
+  EXPECT_EQ(no_sensors.pitch, 0.0);
+  EXPECT_EQ(no_sensors.roll, 0.0);
+  msg::PilotControls lost = with_forces(-100.0f, 50.0f, 0);
+  lost.discretes(msg::DISCRETE_FORCE_SENSORS | msg::DISCRETE_INPUTS_INVALID);
+  EXPECT_EQ(cws_inputs(lost, p).pitch, 0.0);
+}
+
+TEST(CwsForces, NonFiniteOrAbsurdForcesAreRefusedByAxis) {
+  EXPECT_FALSE(check_pilot_forces(with_forces(-60.0f, 30.0f, 0.0f)).has_value());
+  EXPECT_FALSE(check_pilot_forces(with_forces(-2000.0f, 2000.0f, 1999.0f)).has_value());
+  const auto nan_column = check_pilot_forces(with_forces(std::nanf(""), 0.0f, 0.0f));
+  ASSERT_TRUE(nan_column.has_value());
+  EXPECT_NE(nan_column->find("column"), std::string::npos) << *nan_column;
+  const auto inf_wheel = check_pilot_forces(with_forces(0.0f, std::numeric_limits<float>::infinity(), 0.0f));
+  ASSERT_TRUE(inf_wheel.has_value());
+  EXPECT_NE(inf_wheel->find("wheel"), std::string::npos) << *inf_wheel;
+  const auto absurd_pedals = check_pilot_forces(with_forces(0.0f, 0.0f, -2500.0f));
+  ASSERT_TRUE(absurd_pedals.has_value());
+  EXPECT_NE(absurd_pedals->find("pedals"), std::string::npos) << *absurd_pedals;
+}
+
+TEST(CwsForces, ParametersAreCheckedByName) {
+  afcs::AfcsParameters p;
+  p.cws_full_wheel_force_n = p.cws_breakout_force_n;  // no range to scale over
+  try {
+    p.validate();
+    FAIL() << "accepted a full-scale force at the breakout";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("cws_full_wheel_force_n"), std::string::npos) << e.what();
+  }
+  afcs::AfcsParameters q;
+  q.cws_breakout_force_n = std::nan("");
+  EXPECT_THROW(q.validate(), std::invalid_argument);
+  EXPECT_NO_THROW(afcs::AfcsParameters{}.validate());
+}
+
+}  // namespace
+}  // namespace fedsim::flight

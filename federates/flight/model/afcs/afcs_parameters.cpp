@@ -35,6 +35,9 @@ void AfcsParameters::validate() const {
   positive("command_rate_filter_s", command_rate_filter_s);
   positive("cws_pitch_rate_radps", cws_pitch_rate_radps);
   positive("cws_roll_rate_radps", cws_roll_rate_radps);
+  within("cws_breakout_force_n", cws_breakout_force_n, 0.0, 200.0);
+  within("cws_full_column_force_n", cws_full_column_force_n, cws_breakout_force_n + 1.0, 1000.0);
+  within("cws_full_wheel_force_n", cws_full_wheel_force_n, cws_breakout_force_n + 1.0, 1000.0);
   within("engage_bank_limit_rad", engage_bank_limit_rad, 1 * kDeg, 60 * kDeg);
   within("engage_pitch_min_rad", engage_pitch_min_rad, -45 * kDeg, 0.0);
   within("engage_pitch_max_rad", engage_pitch_max_rad, 0.0, 45 * kDeg);

@@ -163,6 +163,18 @@ struct AfcsParameters {
   double command_rate_filter_s = 0.5;  // smoothing of the attitude commands' rates (rate damping reference)
   double cws_pitch_rate_radps = 3.0 * units::kDegToRad;  // per unit of column force
   double cws_roll_rate_radps = 6.0 * units::kDegToRad;
+  // Control-wheel steering from the force transducers (fedsim/pilot_controls pilot_force_n, with
+  // DISCRETE_FORCE_SENSORS): no input within the breakout (the transducers' detent), then linear
+  // to full input (the rates above) at the full force, held beyond it. The 737 maintenance
+  // manual (22-11-00, CWS force transducers) describes signals proportional to the force with an
+  // out-of-detent threshold, and the FCOM says CWS takes "control pressure similar to that
+  // required for manual flight", but neither gives the forces: these are fedsim's choice. Full
+  // input at half the one-hand short-term forces of 14 CFR 25.143(d) (pitch 50 lbf, roll 25 lbf),
+  // i.e. a firm one-hand pull or turn, well short of what a pilot can hold only briefly; the
+  // breakout (2.2 lbf) above a hand resting on the controls and the control loader's friction.
+  double cws_breakout_force_n = 10.0;
+  double cws_full_column_force_n = 111.0;  // 25 lbf
+  double cws_full_wheel_force_n = 56.0;    // 12.5 lbf
   double engage_bank_limit_rad = 30.0 * units::kDegToRad;
   double engage_pitch_min_rad = -10.0 * units::kDegToRad;
   double engage_pitch_max_rad = 20.0 * units::kDegToRad;
