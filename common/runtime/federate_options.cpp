@@ -1,4 +1,7 @@
 #include "common/runtime/federate_options.hpp"
+
+#include <cstdlib>
+#include <iostream>
 #include "common/util/cli_checks.hpp"
 
 #include "common/runtime/topic_catalogue.hpp"
@@ -16,7 +19,14 @@ std::string default_qos_file() {
 void add_dds_options(CLI::App& app, ParticipantOptions& options) {
   options.qos_file = default_qos_file();
   if (const char* env = std::getenv("FEDSIM_DOMAIN"); env && *env) {
-    options.domain_id = std::atoi(env);
+    // Checked here, before anything joins: "abc" once meant domain 0, silently.
+    char* end = nullptr;
+    const long domain = std::strtol(env, &end, 10);
+    if (end == env || *end != '\0' || domain < 0 || domain > 232) {
+      std::cerr << "FEDSIM_DOMAIN: '" << env << "' is not a DDS domain id (0..232)\n";
+      std::exit(2);
+    }
+    options.domain_id = static_cast<int>(domain);
   }
   if (const char* env = std::getenv("FEDSIM_PARTICIPANT_PROFILE"); env && *env) {
     options.participant_profile = env;

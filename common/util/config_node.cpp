@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace fedsim::util {
@@ -21,6 +22,43 @@ std::string join(const std::vector<std::string>& words) {
   for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
 }
+
+int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
+
+std::string kind_of(const YAML::Node& node) {
+  if (node.IsMap()) return "a map";
+  if (node.IsSequence()) return "a list";
+  return "empty";
+}
+
+// yaml-cpp takes any node as a map key and keeps every duplicate key (a lookup finds the first,
+// so a later value was silently ignored). Both are refused once, for the whole file, so that
+// every reader of a config gets "file:line: field: problem" instead of a yaml-cpp conversion
+// error without file or field, or a value that is never used.
+void check_keys(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      check_keys(node[i], file, path + "[" + std::to_string(i) + "]");
+    }
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> first_line;
+  for (const auto& kv : node) {
+    const std::string where = file + ":" + std::to_string(line_of(kv.first)) + ": ";
+    if (!kv.first.IsScalar()) {
+      throw ConfigError(where + (path.empty() ? "(top level)" : path) +
+                        ": a key must be plain text, not " + kind_of(kv.first));
+    }
+    const std::string key = kv.first.Scalar();
+    const std::string field = path.empty() ? key : path + "." + key;
+    if (const auto [first, fresh] = first_line.emplace(key, line_of(kv.first)); !fresh) {
+      throw ConfigError(where + field + ": given twice (first on line " +
+                        std::to_string(first->second) + ")");
+    }
+    check_keys(kv.second, file, field);
+  }
+}
 }  // namespace
 
 ConfigNode ConfigNode::load_file(const std::string& path) {
@@ -28,12 +66,15 @@ ConfigNode ConfigNode::load_file(const std::string& path) {
 }
 
 ConfigNode ConfigNode::parse(const std::string& text, const std::string& origin) {
+  YAML::Node root;
   try {
-    return ConfigNode(YAML::Load(text), origin, "");
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw ConfigError(origin + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
                       e.msg);
   }
+  check_keys(root, origin, "");
+  return ConfigNode(root, origin, "");
 }
 
 ConfigNode::ConfigNode(YAML::Node node, std::string file, std::string field_path)

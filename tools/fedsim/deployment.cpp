@@ -2,6 +2,7 @@
 
 #include "common/util/config_node.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -18,11 +19,26 @@ std::vector<std::string> string_list(const ConfigNode& node, const std::string& 
   return out;
 }
 
+bool is_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+
+/// A name of the deployment or a federate. Names become file names (out/<deployment>/,
+/// logs/<federate>.log: no '/' or '..'), a comma-separated list (the timing federate's --expect)
+/// and FederateStatus.federate (string<32>), so: 1-32 of [A-Za-z0-9_-].
+std::string read_name(const ConfigNode& node) {
+  const std::string name = node.string("name");
+  const bool ok = !name.empty() && name.size() <= 32 &&
+                  std::all_of(name.begin(), name.end(), is_name_char);
+  if (!ok) node.fail_at("name", "'" + name + "' must be 1-32 characters of A-Z a-z 0-9 _ -");
+  return name;
+}
+
 FederateSpec read_federate(const ConfigNode& node) {
   node.reject_unknown_keys({"name", "binary", "args", "lockstep", "federate_options", "required"});
   FederateSpec spec;
-  spec.name = node.string("name");
-  if (spec.name.empty() || spec.name.size() > 31) node.fail_at("name", "must be 1-31 characters");
+  spec.name = read_name(node);
   spec.binary = node.string("binary");
   spec.args = string_list(node, "args");
   spec.lockstep = node.boolean_or("lockstep", true);
@@ -39,7 +55,7 @@ Deployment read(const ConfigNode& root) {
                             "sync_qos", "timing", "federates", "after"});
   Deployment d;
   d.file = root.file();
-  d.name = root.string("name");
+  d.name = read_name(root);
   d.mode = root.choice_or("mode", {"realtime", "lockstep"}, "lockstep");
   d.rate_hz = root.number_or("rate_hz", 50.0, 1.0, 10000.0);
   if (root.has("domain")) {

@@ -17,6 +17,9 @@
 //
 // Substitutions in args: ${SOURCE_DIR}, ${DATA_DIR}, ${DEPLOY_DIR} (the file's folder),
 // ${OUT_DIR} (fedsim run --out), ${BIN_DIR} (where the fedsim binaries are).
+// Names (the deployment's and each federate's) are 1-32 characters of A-Z a-z 0-9 _ -: they
+// become file and folder names and the timing federate's comma-separated --expect list.
+// A key given twice, or a key that is a list or a map, is an error (file:line: field).
 #pragma once
 
 #include <map>

@@ -208,13 +208,19 @@ int run_in_process(const RunOptions& options) {
                 << rec.file.string() << "\n";
     }
   }
-  const bool interrupted = done < frames;
-  if (interrupted) std::cout << "fedsim run: interrupted after " << done << " frames\n";
+  // Fewer frames than asked: Ctrl-C / SIGTERM (interrupted: no plots, exit 130), or a member's
+  // SHUTDOWN command (a scenario's stop: the run is over as it says, and the plots are drawn).
+  const bool interrupted = runtime::shutdown_requested();
+  if (interrupted) {
+    std::cout << "fedsim run: interrupted after " << done << " frames\n";
+  } else if (done < frames) {
+    std::cout << "fedsim run: stopped after " << done << " frames by a shutdown command (a scenario's stop)\n";
+  }
   if (!failed && !interrupted && !d.after.empty()) {
     if (run_after_commands(d, vars, bin_dir(), out_dir + "/logs", options.quiet) != 0) failed = true;
   }
-  std::cout << "fedsim run: " << (failed ? "FAILED" : "done") << "\n";
-  return failed ? 1 : 0;
+  std::cout << "fedsim run: " << (failed ? "FAILED" : interrupted ? "interrupted" : "done") << "\n";
+  return failed ? 1 : interrupted ? 130 : 0;
 }
 
 }  // namespace fedsim::launcher

@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -35,14 +37,29 @@ struct Child {
   std::string name;
   std::vector<std::string> argv;
   bool required = true;
-  pid_t pid = -1;
+  bool lockstep = false;         // in the timing federate's --expect list
+  bool timing = false;           // the timing federate itself
+  pid_t pid = -1;                // also its process group id (see start_child)
   int out_fd = -1;
   std::string partial_line;
   std::ofstream log;
   bool exited = false;
   int status = 0;
-  bool sent_term = false;
+  bool sent_term = false;        // it was alive when we sent SIGTERM (its death by it is clean)
+  bool group_signalled = false;  // its process group got our SIGTERM
+  bool group_gone = false;       // no process of its group is left
+
+  /// Exited, and nothing it started still writes to its output.
+  bool finished() const { return exited && out_fd < 0; }
 };
+
+using Children = std::vector<std::unique_ptr<Child>>;
+
+/// stderr, after what stdout holds so far: the two stay in order in a log or a pipe.
+std::ostream& warn() {
+  std::cout.flush();
+  return std::cerr << "fedsim run: ";
+}
 
 std::string self_dir() {
   std::error_code ec;
@@ -52,7 +69,8 @@ std::string self_dir() {
 
 bool is_executable(const fs::path& p) { return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0; }
 
-std::string resolve_binary(const std::string& binary, const std::string& bin_dir) {
+std::string resolve_binary(const std::string& binary, const std::string& bin_dir,
+                           const std::string& hint = " (did the build finish?)") {
   if (binary.find('/') != std::string::npos) {
     if (is_executable(binary)) return binary;
     throw util::ConfigError("binary not found or not executable: " + binary);
@@ -65,8 +83,7 @@ std::string resolve_binary(const std::string& binary, const std::string& bin_dir
       if (!dir.empty() && is_executable(fs::path(dir) / binary)) return (fs::path(dir) / binary).string();
     }
   }
-  throw util::ConfigError("binary '" + binary + "' not found in " + bin_dir +
-                          " or PATH (did the build finish?)");
+  throw util::ConfigError("binary '" + binary + "' not found in " + bin_dir + " or PATH" + hint);
 }
 
 std::string describe_exit(int status) {
@@ -89,7 +106,9 @@ void start_child(Child& child, const std::string& log_path) {
   if (pid == 0) {
     dup2(fds[1], STDOUT_FILENO);
     dup2(fds[1], STDERR_FILENO);
-    setpgid(0, 0);                     // Ctrl-C reaches the launcher only; it stops the children
+    // Its own process group: Ctrl-C reaches the launcher only (it stops the children), and the
+    // launcher's signals reach everything the federate started (a script's children too).
+    setpgid(0, 0);
     prctl(PR_SET_PDEATHSIG, SIGTERM);  // and if the launcher dies, they stop too
     sigset_t all;
     sigemptyset(&all);
@@ -101,12 +120,98 @@ void start_child(Child& child, const std::string& log_path) {
     std::fprintf(stderr, "cannot execute %s: %s\n", argv[0], std::strerror(errno));
     _exit(127);
   }
+  setpgid(pid, pid);  // here too, so that a signal sent at once already finds the group
   close(fds[1]);
   child.pid = pid;
   child.out_fd = fds[0];
   child.log.open(log_path);
 }
 
+/// Signals every process of the child's group: SIGKILL to the direct child alone left a
+/// script's children running and holding the output pipe, and the run never ended.
+void signal_group(Child& c, int sig) {
+  if (c.group_gone) return;
+  if (kill(-c.pid, sig) != 0 && errno == ESRCH) c.group_gone = true;
+}
+
+void terminate(Child& c) {
+  if (c.group_signalled || c.finished()) return;
+  c.group_signalled = true;
+  c.sent_term = !c.exited;
+  signal_group(c, SIGTERM);
+}
+
+void emit_line(Child& c, const std::string& line, bool quiet) {
+  c.log << line << "\n";
+  if (!quiet) std::cout << "[" << c.name << "] " << line << "\n";
+}
+
+/// Stops reading the child's output (at its end, or when we give up on it).
+void close_output(Child& c, bool quiet) {
+  if (c.out_fd < 0) return;
+  if (!c.partial_line.empty()) emit_line(c, c.partial_line, quiet);
+  c.partial_line.clear();
+  c.log.flush();
+  close(c.out_fd);
+  c.out_fd = -1;
+}
+
+void read_output(Child& c, bool quiet) {
+  char buf[4096];
+  const ssize_t n = read(c.out_fd, buf, sizeof(buf));
+  if (n < 0 && (errno == EINTR || errno == EAGAIN)) return;
+  if (n <= 0) {
+    close_output(c, quiet);
+    return;
+  }
+  c.partial_line.append(buf, static_cast<std::size_t>(n));
+  std::size_t nl;
+  while ((nl = c.partial_line.find('\n')) != std::string::npos) {
+    emit_line(c, c.partial_line.substr(0, nl), quiet);
+    c.partial_line.erase(0, nl + 1);
+  }
+  c.log.flush();
+}
+
+void pump_output(Children& children, int timeout_ms, bool quiet) {
+  std::vector<pollfd> fds;
+  std::vector<Child*> owners;
+  for (auto& c : children) {
+    if (c->out_fd >= 0) {
+      fds.push_back({c->out_fd, POLLIN, 0});
+      owners.push_back(c.get());
+    }
+  }
+  if (fds.empty()) {
+    usleep(static_cast<useconds_t>(timeout_ms) * 1000);
+    return;
+  }
+  if (poll(fds.data(), fds.size(), timeout_ms) <= 0) return;
+  for (std::size_t i = 0; i < fds.size(); ++i) {
+    if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) read_output(*owners[i], quiet);
+  }
+  std::cout.flush();
+}
+
+void reap(Children& children) {
+  for (auto& c : children) {
+    if (c->exited) continue;
+    int status = 0;
+    if (waitpid(c->pid, &status, WNOHANG) == c->pid) {
+      c->exited = true;
+      c->status = status;
+    }
+  }
+}
+
+bool all_finished(const Children& children) {
+  for (const auto& c : children) {
+    if (!c->finished()) return false;
+  }
+  return true;
+}
+
+/// Watches fedsim/federate_status: the progress line, and who ever ran.
 class Progress {
  public:
   Progress(const runtime::ParticipantOptions& dds) {
@@ -114,17 +219,26 @@ class Progress {
       auto participant = runtime::DdsParticipant::create(dds);
       sub_ = std::make_unique<runtime::Subscription<msg::FederateStatus>>(
           participant, runtime::topics::federate_status, runtime::qos::kStatus,
-          [this](const msg::FederateStatus& s, const auto&) {
-            std::lock_guard lock(mutex_);
-            latest_[s.federate().to_string()] = s;
-          });
+          [this](const msg::FederateStatus& s, const auto&) { note(s); });
       participant_ = participant;
     } catch (const std::exception& e) {
-      std::cerr << "fedsim run: progress monitor unavailable: " << e.what() << "\n";
+      warn() << "progress monitor unavailable: " << e.what() << "\n";
     }
   }
   ~Progress() {
     if (sub_) sub_->close();
+  }
+  /// False if the monitor could not subscribe: then nobody can be said not to have run.
+  bool available() const { return sub_ != nullptr; }
+  /// Reported its state at all (a fedsim federate; a plain program never does).
+  bool reported(const std::string& name) {
+    std::lock_guard lock(mutex_);
+    return latest_.count(name) != 0;
+  }
+  /// Reported RUNNING or a stepped frame (the timing federate: a ticked one).
+  bool ran(const std::string& name) {
+    std::lock_guard lock(mutex_);
+    return ran_.count(name) != 0;
   }
   std::string line() {
     static const char* kState[] = {"starting", "ready", "running", "stopping", "FAILED", "LOST"};
@@ -140,76 +254,305 @@ class Progress {
   }
 
  private:
+  void note(const msg::FederateStatus& s) {
+    const std::string name = s.federate().to_string();
+    std::lock_guard lock(mutex_);
+    latest_[name] = s;
+    if (s.state() == msg::FEDERATE_RUNNING || s.frames_done() > 0) ran_.insert(name);
+  }
+
   std::shared_ptr<runtime::DdsParticipant> participant_;
   std::unique_ptr<runtime::Subscription<msg::FederateStatus>> sub_;
   std::mutex mutex_;
   std::map<std::string, msg::FederateStatus> latest_;
+  std::set<std::string> ran_;
 };
 
-void pump_output(std::vector<std::unique_ptr<Child>>& children, int timeout_ms, bool quiet) {
-  std::vector<pollfd> fds;
-  std::vector<Child*> owners;
-  for (auto& c : children) {
-    if (c->out_fd >= 0) {
-      fds.push_back({c->out_fd, POLLIN, 0});
-      owners.push_back(c.get());
+/// The stop sequence: the timing federate first (no new frames), every federate's process
+/// group 0.3 s later (time for the timing federate's SHUTDOWN command), SIGKILL to every group
+/// still there after --stop-grace, and 1 s after that the output of a process that left its
+/// group (setsid) is no longer waited for: nothing of ours can stop it.
+class Stopper {
+ public:
+  Stopper(Children& children, double grace_s, bool quiet)
+      : children_(children), grace_s_(grace_s), quiet_(quiet) {}
+
+  bool stopping() const { return since_ns_ != 0; }
+  const std::string& reason() const { return reason_; }
+
+  void begin(const std::string& why) {
+    if (stopping()) return;
+    since_ns_ = util::monotonic_ns();
+    reason_ = why;
+    std::cout << "fedsim run: stopping (" << why << ")\n";
+    for (auto& c : children_) {
+      if (c->timing) terminate(*c);
     }
   }
-  if (fds.empty()) {
-    usleep(static_cast<useconds_t>(timeout_ms) * 1000);
-    return;
+
+  /// Moves the sequence on; a federate that had to be killed is a failure.
+  void step(bool& failed) {
+    if (!stopping()) return;
+    const double t = (util::monotonic_ns() - since_ns_) * 1e-9;
+    if (phase_ == 0 && t > 0.3) {
+      for (auto& c : children_) terminate(*c);
+      phase_ = 1;
+    }
+    if (phase_ == 1 && t > grace_s_ + 0.3) {
+      kill_groups(failed);
+      phase_ = 2;
+    }
+    if (phase_ == 2 && t > grace_s_ + 1.3) {
+      abandon_output();
+      phase_ = 3;
+    }
   }
-  if (poll(fds.data(), fds.size(), timeout_ms) <= 0) return;
-  for (std::size_t i = 0; i < fds.size(); ++i) {
-    if (!(fds[i].revents & (POLLIN | POLLHUP))) continue;
-    Child& c = *owners[i];
-    char buf[4096];
-    const ssize_t n = read(c.out_fd, buf, sizeof(buf));
-    if (n <= 0) {
-      if (!c.partial_line.empty()) {
-        c.log << c.partial_line << "\n";
-        if (!quiet) std::cout << "[" << c.name << "] " << c.partial_line << "\n";
-        c.partial_line.clear();
+
+ private:
+  void kill_groups(bool& failed) {
+    for (auto& c : children_) {
+      if (c->finished()) continue;
+      if (!c->exited) {
+        warn() << c->name << " did not stop within " << grace_s_ << " s: killing it\n";
+        c->sent_term = false;  // a kill is a failure
+        failed = true;
+        signal_group(*c, SIGKILL);
+        continue;
       }
-      close(c.out_fd);
-      c.out_fd = -1;
-      continue;
+      signal_group(*c, SIGKILL);
+      if (!c->group_gone) {
+        warn() << c->name << " exited but processes it started did not stop: killed them\n";
+      }
     }
-    c.partial_line.append(buf, static_cast<std::size_t>(n));
-    std::size_t nl;
-    while ((nl = c.partial_line.find('\n')) != std::string::npos) {
-      const std::string line = c.partial_line.substr(0, nl);
-      c.partial_line.erase(0, nl + 1);
-      c.log << line << "\n";
-      if (!quiet) std::cout << "[" << c.name << "] " << line << "\n";
+  }
+
+  void abandon_output() {
+    for (auto& c : children_) {
+      if (!c->exited || c->out_fd < 0) continue;
+      warn() << c->name << ": a process outside its process group still holds its output: "
+                                "no longer reading it\n";
+      close_output(*c, quiet_);
     }
-    c.log.flush();
+  }
+
+  Children& children_;
+  double grace_s_;
+  bool quiet_;
+  std::uint64_t since_ns_ = 0;
+  std::string reason_;
+  int phase_ = 0;
+};
+
+/// Who never ran. The timing federate exits 0 when it is stopped while still waiting for its
+/// federates (a --duration shorter than its --join-timeout), so exit statuses alone report a
+/// federation that never started as a success. A lockstep member must have run; any other
+/// required federate that reports its state, too (a plain program never reports one).
+std::vector<std::string> never_ran(const Children& children, Progress& progress) {
+  std::vector<std::string> out;
+  if (!progress.available()) return out;
+  for (const auto& c : children) {
+    if (progress.ran(c->name)) continue;
+    if (c->timing) {
+      out.push_back("timing (no frame ticked)");
+    } else if (c->required && (c->lockstep || progress.reported(c->name))) {
+      out.push_back(c->name + " (never reported RUNNING)");
+    }
+  }
+  return out;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+/// An interrupted run exits as a shell reports a process killed by the signal (130 for Ctrl-C).
+int interrupted_exit_code() {
+  const int sig = runtime::shutdown_signal();
+  return 128 + (sig != 0 ? sig : SIGINT);
+}
+
+std::string signal_name() { return runtime::shutdown_signal() == SIGTERM ? "SIGTERM" : "SIGINT"; }
+
+/// FEDSIM_DOMAIN, checked as --domain is: "abc" is an error, not domain 0.
+int domain_from_env(int fallback) {
+  const char* env = std::getenv("FEDSIM_DOMAIN");
+  if (!env || !*env) return fallback;
+  errno = 0;
+  char* end = nullptr;
+  const long value = std::strtol(env, &end, 10);
+  if (*end != '\0' || errno != 0 || value < 0 || value > 232) {
+    throw util::ConfigError(std::string("FEDSIM_DOMAIN: '") + env + "' is not a DDS domain id (0..232)");
+  }
+  return static_cast<int>(value);
+}
+
+/// An after-command's argv, its program resolved; throws util::ConfigError naming the program.
+std::vector<std::string> after_argv(const std::vector<std::string>& words,
+                                    const std::map<std::string, std::string>& vars,
+                                    const std::string& bin_dir) {
+  std::vector<std::string> argv{resolve_binary(substitute(words[0], vars), bin_dir, "")};
+  for (std::size_t i = 1; i < words.size(); ++i) argv.push_back(substitute(words[i], vars));
+  return argv;
+}
+
+/// Says at once, not only after the run, that an after-command's program is missing.
+void warn_missing_after_programs(const Deployment& d, const std::map<std::string, std::string>& vars,
+                                 const std::string& bin_dir) {
+  for (const auto& words : d.after) {
+    try {
+      after_argv(words, vars, bin_dir);
+    } catch (const std::exception& e) {
+      warn() << "warning: after-command '" << words[0] << "' will fail: " << e.what() << "\n";
+    }
+  }
+}
+
+/// Runs one after-command to its end; true if it stopped cleanly.
+bool run_one_after_command(Children& one, const std::string& log_path, bool quiet) {
+  Child& child = *one.front();
+  start_child(child, log_path);
+  std::uint64_t exited_at = 0;
+  while (!all_finished(one)) {
+    pump_output(one, 100, quiet);
+    reap(one);
+    if (runtime::shutdown_requested()) terminate(child);
+    if (child.exited && !exited_at) exited_at = util::monotonic_ns();
+    // Processes it started that hold its output open do not keep the run waiting.
+    if (exited_at && util::monotonic_ns() - exited_at > 2'000'000'000ull) {
+      signal_group(child, SIGKILL);
+      close_output(child, quiet);
+    }
+  }
+  return clean_exit(child);
+}
+
+/// Everything `fedsim run` starts, and where.
+struct Plan {
+  Deployment d;
+  Children children;
+  std::map<std::string, std::string> vars;
+  std::string bin_dir;
+  std::string log_dir;
+  runtime::ParticipantOptions dds;
+};
+
+/// --name and the DDS settings every fedsim federate takes.
+std::vector<std::string> common_args(const std::string& name, const Plan& p) {
+  return {"--name", name, "--domain", std::to_string(p.dds.domain_id), "--qos-file",
+          p.dds.qos_file, "--participant-profile", p.dds.participant_profile, "--sync-qos",
+          p.d.sync_qos};
+}
+
+std::unique_ptr<Child> federate_child(const FederateSpec& f, const Plan& p) {
+  auto child = std::make_unique<Child>();
+  child->name = f.name;
+  child->required = f.required;
+  child->lockstep = f.lockstep;
+  child->argv.push_back(resolve_binary(f.binary, p.bin_dir));
+  for (const auto& a : f.args) child->argv.push_back(substitute(a, p.vars));
+  // After the user's args, so that a subcommand (`fedsim record ...`) comes first.
+  if (f.federate_options) {
+    for (auto& a : common_args(f.name, p)) child->argv.push_back(a);
+  }
+  return child;
+}
+
+std::unique_ptr<Child> timing_child(const Plan& p) {
+  auto timing = std::make_unique<Child>();
+  timing->name = "timing";
+  timing->timing = true;
+  timing->argv.push_back(resolve_binary("fedsim-timing", p.bin_dir));
+  for (auto& a : common_args("timing", p)) timing->argv.push_back(a);
+  for (const std::string& a : {std::string("--mode"), p.d.mode, std::string("--rate"),
+                               std::to_string(p.d.rate_hz), std::string("--shutdown-on-exit")}) {
+    timing->argv.push_back(a);
+  }
+  // Names are [A-Za-z0-9_-] (deployment.cpp): no comma splits one.
+  std::string expect;
+  for (const auto& c : p.children) {
+    if (c->lockstep) expect += (expect.empty() ? "" : ",") + c->name;
+  }
+  if (!expect.empty()) {
+    timing->argv.push_back("--expect");
+    timing->argv.push_back(expect);
+  }
+  for (const auto& a : p.d.timing_args) timing->argv.push_back(substitute(a, p.vars));
+  return timing;
+}
+
+/// Loads the deployment and builds every command line; throws on any error in them.
+void plan_run(const RunOptions& options, Plan& p) {
+  p.bin_dir = self_dir();
+  p.d = load_with_scenario(options);
+  if (!options.mode.empty()) p.d.mode = options.mode;
+  const int domain = options.domain >= 0 ? options.domain : domain_from_env(p.d.domain);
+  const std::string out_dir = options.out_dir.empty() ? "out/" + p.d.name : options.out_dir;
+  p.log_dir = out_dir + "/logs";
+  fs::create_directories(p.log_dir);
+  p.vars = deployment_vars(options.deployment_path, out_dir);
+  p.dds.name = "fedsim-run";
+  p.dds.domain_id = domain;
+  p.dds.qos_file = substitute(p.d.qos_file, p.vars);
+  p.dds.participant_profile = p.d.participant_profile;
+  if (!fs::exists(p.dds.qos_file)) {
+    throw util::ConfigError(p.d.file + ": qos_file not found: " + p.dds.qos_file);
+  }
+  for (const auto& f : p.d.federates) p.children.push_back(federate_child(f, p));
+  if (p.d.has_timing) p.children.push_back(timing_child(p));
+}
+
+void start_all(Plan& p) {
+  std::cout << "fedsim run: " << p.d.name << " mode=" << p.d.mode << " rate=" << p.d.rate_hz
+            << " Hz domain=" << p.dds.domain_id << " profile=" << p.dds.participant_profile
+            << " logs=" << p.log_dir << "\n";
+  for (auto& c : p.children) {
+    std::string cmd;
+    for (const auto& a : c->argv) cmd += a + " ";
+    std::cout << "fedsim run: starting " << c->name << ": " << cmd << "\n";
+    start_child(*c, p.log_dir + "/" + c->name + ".log");
   }
   std::cout.flush();
 }
 
-void reap(std::vector<std::unique_ptr<Child>>& children) {
+/// Before any stop: the timing federate's end stops the run; so does a required federate's
+/// failure.
+void check_exits(Children& children, Stopper& stopper, bool& failed) {
   for (auto& c : children) {
-    if (c->exited) continue;
-    int status = 0;
-    if (waitpid(c->pid, &status, WNOHANG) == c->pid) {
-      c->exited = true;
-      c->status = status;
+    if (!c->exited || stopper.stopping()) continue;
+    if (c->timing) {
+      stopper.begin(std::string("timing federate finished (") + describe_exit(c->status) + ")");
+    } else if (c->required && !clean_exit(*c)) {
+      failed = true;
+      stopper.begin(c->name + " failed (" + describe_exit(c->status) + ")");
     }
   }
 }
 
-bool all_exited(const std::vector<std::unique_ptr<Child>>& children) {
-  for (const auto& c : children) {
-    if (!c->exited || c->out_fd >= 0) return false;
+/// Runs the federation until every federate stopped; returns the stop reason.
+std::string supervise(Children& children, const RunOptions& options, Progress& progress, bool& failed) {
+  Stopper stopper(children, options.stop_grace_s, options.quiet);
+  const std::uint64_t start_ns = util::monotonic_ns();
+  const auto period_ns = static_cast<std::uint64_t>(options.progress_period_s * 1e9);
+  std::uint64_t next_progress = start_ns + period_ns;
+  while (!all_finished(children)) {
+    pump_output(children, 50, options.quiet);
+    reap(children);
+    const std::uint64_t now = util::monotonic_ns();
+    if (runtime::shutdown_requested()) stopper.begin("interrupted");
+    if (options.duration_s > 0 && now - start_ns >= options.duration_s * 1e9) {
+      stopper.begin("duration reached");
+    }
+    check_exits(children, stopper, failed);
+    stopper.step(failed);
+    if (!stopper.stopping() && period_ns > 0 && now >= next_progress) {
+      next_progress += period_ns;
+      std::cout << "fedsim run: progress t=" << static_cast<int>((now - start_ns) / 1e9) << "s"
+                << progress.line() << "\n";
+    }
   }
-  return true;
-}
-
-void terminate(Child& c) {
-  if (c.exited || c.sent_term) return;
-  c.sent_term = true;
-  kill(c.pid, SIGTERM);
+  return stopper.reason();
 }
 
 }  // namespace
@@ -218,20 +561,20 @@ int run_after_commands(const Deployment& d, const std::map<std::string, std::str
                        const std::string& bin_dir, const std::string& log_dir, bool quiet) {
   int index = 0;
   for (const auto& words : d.after) {
-    auto child = std::make_unique<Child>();
-    child->name = "after" + std::to_string(++index);
-    child->argv.push_back(resolve_binary(substitute(words[0], vars), bin_dir));
-    for (std::size_t i = 1; i < words.size(); ++i) child->argv.push_back(substitute(words[i], vars));
-    std::vector<std::unique_ptr<Child>> one;
-    start_child(*child, log_dir + "/" + child->name + ".log");
-    one.push_back(std::move(child));
-    while (!all_exited(one)) {
-      pump_output(one, 100, quiet);
-      reap(one);
+    if (runtime::shutdown_requested()) return 1;
+    Children one;
+    one.push_back(std::make_unique<Child>());
+    Child& child = *one.front();
+    child.name = "after" + std::to_string(++index);
+    try {
+      child.argv = after_argv(words, vars, bin_dir);
+    } catch (const std::exception& e) {  // a missing program fails the run, not the launcher
+      warn() << "after-command '" << words[0] << "' cannot run: " << e.what() << "\n";
+      return 1;
     }
-    if (!clean_exit(*one[0])) {
-      std::cerr << "fedsim run: after-command '" << words[0] << "' failed ("
-                << describe_exit(one[0]->status) << ")\n";
+    if (!run_one_after_command(one, log_dir + "/" + child.name + ".log", quiet)) {
+      warn() << "after-command '" << words[0] << "' failed (" << describe_exit(child.status)
+             << ")\n";
       return 1;
     }
   }
@@ -267,148 +610,47 @@ std::map<std::string, std::string> deployment_vars(const std::string& deployment
 }
 
 int run_deployment(const RunOptions& options) {
-  if (options.in_process) return run_in_process(options);
+  if (options.in_process) {
+    const int rc = run_in_process(options);
+    if (!runtime::shutdown_requested()) return rc;
+    std::cout << "fedsim run: interrupted (" << signal_name() << ")\n";
+    return interrupted_exit_code();
+  }
   runtime::install_shutdown_handler();
-  Deployment d;
-  std::vector<std::unique_ptr<Child>> children;
-  std::map<std::string, std::string> vars;
-  std::string bin_dir = self_dir();
-  std::string log_dir;
-  runtime::ParticipantOptions dds;
+  Plan p;
   try {
-    d = load_with_scenario(options);
-    if (!options.mode.empty()) d.mode = options.mode;
-    int domain = d.domain;
-    if (const char* env = std::getenv("FEDSIM_DOMAIN"); env && *env) domain = std::atoi(env);
-    if (options.domain >= 0) domain = options.domain;
-    const std::string out_dir = options.out_dir.empty() ? "out/" + d.name : options.out_dir;
-    fs::create_directories(out_dir);
-    log_dir = out_dir + "/logs";
-    fs::create_directories(log_dir);
-    vars = deployment_vars(options.deployment_path, out_dir);
-    dds.name = "fedsim-run";
-    dds.domain_id = domain;
-    dds.qos_file = substitute(d.qos_file, vars);
-    dds.participant_profile = d.participant_profile;
-    if (!fs::exists(dds.qos_file)) throw util::ConfigError(d.file + ": qos_file not found: " + dds.qos_file);
-
-    auto common_args = [&](const std::string& name) {
-      return std::vector<std::string>{"--name", name, "--domain", std::to_string(domain),
-                                      "--qos-file", dds.qos_file, "--participant-profile",
-                                      dds.participant_profile, "--sync-qos", d.sync_qos};
-    };
-    std::string expect;
-    for (const auto& f : d.federates) {
-      auto child = std::make_unique<Child>();
-      child->name = f.name;
-      child->required = f.required;
-      child->argv.push_back(resolve_binary(f.binary, bin_dir));
-      for (const auto& a : f.args) child->argv.push_back(substitute(a, vars));
-      // After the user's args, so that a subcommand (`fedsim record ...`) comes first.
-      if (f.federate_options) {
-        for (auto& a : common_args(f.name)) child->argv.push_back(a);
-      }
-      if (f.lockstep) expect += (expect.empty() ? "" : ",") + f.name;
-      children.push_back(std::move(child));
-    }
-    if (d.has_timing) {
-      auto timing = std::make_unique<Child>();
-      timing->name = "timing";
-      timing->argv.push_back(resolve_binary("fedsim-timing", bin_dir));
-      for (auto& a : common_args("timing")) timing->argv.push_back(a);
-      for (const std::string& a : {std::string("--mode"), d.mode, std::string("--rate"),
-                                   std::to_string(d.rate_hz), std::string("--shutdown-on-exit")}) {
-        timing->argv.push_back(a);
-      }
-      if (!expect.empty()) {
-        timing->argv.push_back("--expect");
-        timing->argv.push_back(expect);
-      }
-      for (const auto& a : d.timing_args) timing->argv.push_back(substitute(a, vars));
-      children.push_back(std::move(timing));
-    }
+    plan_run(options, p);
   } catch (const std::exception& e) {
-    std::cerr << "fedsim run: " << e.what() << "\n";
+    warn() << e.what() << "\n";
     return 2;
   }
-
-  std::cout << "fedsim run: " << d.name << " mode=" << d.mode << " rate=" << d.rate_hz
-            << " Hz domain=" << dds.domain_id << " profile=" << dds.participant_profile
-            << " logs=" << log_dir << "\n";
-  for (auto& c : children) {
-    std::string cmd;
-    for (const auto& a : c->argv) cmd += a + " ";
-    std::cout << "fedsim run: starting " << c->name << ": " << cmd << "\n";
-    start_child(*c, log_dir + "/" + c->name + ".log");
-  }
-  std::cout.flush();
-  Progress progress(dds);
-
-  const std::uint64_t start_ns = util::monotonic_ns();
-  std::uint64_t next_progress = start_ns + static_cast<std::uint64_t>(options.progress_period_s * 1e9);
-  std::uint64_t stop_since = 0;
-  std::string stop_reason;
+  warn_missing_after_programs(p.d, p.vars, p.bin_dir);
+  start_all(p);
+  Progress progress(p.dds);
   bool failed = false;
-  auto begin_stop = [&](const std::string& why) {
-    if (stop_since) return;
-    stop_since = util::monotonic_ns();
-    stop_reason = why;
-    std::cout << "fedsim run: stopping (" << why << ")\n";
-    for (auto& c : children) {
-      if (c->name == "timing") terminate(*c);  // no new frames first
-    }
-  };
+  const std::string reason = supervise(p.children, options, progress, failed);
 
-  while (!all_exited(children)) {
-    pump_output(children, 50, options.quiet);
-    reap(children);
-    const std::uint64_t now = util::monotonic_ns();
-    if (runtime::shutdown_requested()) begin_stop("interrupted");
-    if (options.duration_s > 0 && now - start_ns >= options.duration_s * 1e9) begin_stop("duration reached");
-    for (auto& c : children) {
-      if (!c->exited || stop_since) continue;
-      if (c->name == "timing") {
-        begin_stop(std::string("timing federate finished (") + describe_exit(c->status) + ")");
-      } else if (c->required && !clean_exit(*c)) {
-        failed = true;
-        begin_stop(c->name + " failed (" + describe_exit(c->status) + ")");
-      }
-    }
-    if (stop_since) {
-      const std::uint64_t stopping_ns = util::monotonic_ns() - stop_since;
-      // Give the timing federate's SHUTDOWN command a moment, then signal everyone.
-      if (stopping_ns > 300'000'000ull) {
-        for (auto& c : children) terminate(*c);
-      }
-      if (stopping_ns > options.stop_grace_s * 1e9 + 3e8) {
-        for (auto& c : children) {
-          if (!c->exited) {
-            std::cerr << "fedsim run: " << c->name << " did not stop within "
-                      << options.stop_grace_s << " s: killing it\n";
-            kill(c->pid, SIGKILL);
-            c->sent_term = false;  // a kill is a failure
-            failed = true;
-          }
-        }
-      }
-    } else if (options.progress_period_s > 0 && now >= next_progress) {
-      next_progress += static_cast<std::uint64_t>(options.progress_period_s * 1e9);
-      std::cout << "fedsim run: progress t=" << static_cast<int>((now - start_ns) / 1e9) << "s"
-                << progress.line() << "\n";
-    }
-  }
-
-  std::cout << "fedsim run: all federates stopped (" << stop_reason << ")\n";
-  for (const auto& c : children) {
+  std::cout << "fedsim run: all federates stopped (" << reason << ")\n";
+  for (const auto& c : p.children) {
     const bool ok = clean_exit(*c);
     if (!ok && c->required) failed = true;
     std::cout << "  " << (ok ? "ok    " : "FAILED") << " " << c->name << " (" << describe_exit(c->status)
               << ")\n";
   }
-  if (!failed && stop_reason != "interrupted" && !d.after.empty()) {
-    if (run_after_commands(d, vars, bin_dir, log_dir, options.quiet) != 0) failed = true;
+  if (const auto idle = never_ran(p.children, progress); !idle.empty()) {
+    std::cout << "fedsim run: never ran: " << join(idle) << "\n";
+    failed = true;
   }
-  std::cout << "fedsim run: " << (failed ? "FAILED" : "done") << "; logs in " << log_dir << "\n";
+  // An interrupted run gets no after-commands: their input is incomplete.
+  if (!failed && !runtime::shutdown_requested() && !p.d.after.empty()) {
+    if (run_after_commands(p.d, p.vars, p.bin_dir, p.log_dir, options.quiet) != 0) failed = true;
+  }
+  if (runtime::shutdown_requested()) {
+    std::cout << "fedsim run: interrupted (" << signal_name() << ")" << (failed ? "; FAILED" : "")
+              << "; logs in " << p.log_dir << "\n";
+    return interrupted_exit_code();
+  }
+  std::cout << "fedsim run: " << (failed ? "FAILED" : "done") << "; logs in " << p.log_dir << "\n";
   return failed ? 1 : 0;
 }
 

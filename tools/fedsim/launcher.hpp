@@ -23,7 +23,11 @@ struct RunOptions {
   std::string scenario;          // a scenario file run by a fedsim-scenario member ("" = none)
 };
 
-/// Runs the deployment; returns the process exit code (0 = every federate stopped cleanly).
+/// Runs the deployment; returns the process exit code: 0 = the federation ran (the timing
+/// federate ticked, every required federate reported RUNNING) and every federate stopped
+/// cleanly; 1 = a failure (named on the output); 2 = a bad deployment or option; 128 + the
+/// signal (130 for Ctrl-C) when interrupted. Each federate runs in its own process group,
+/// which the stop signals reach whole.
 int run_deployment(const RunOptions& options);
 
 /// Runs the deployment's federates as components in this process (runtime::Composition), in

@@ -29,8 +29,10 @@ int main(int argc, char** argv) {
       ->check(fedsim::util::FiniteRange(0, 232));
   run_cmd->add_option("--out", run.out_dir, "output folder (default out/<deployment name>)");
   run_cmd->add_option("--stop-grace", run.stop_grace_s, "seconds between SIGTERM and SIGKILL")
+      ->check(fedsim::util::FiniteRange(0, 3600))
       ->capture_default_str();
   run_cmd->add_option("--progress", run.progress_period_s, "seconds between progress lines (0 = off)")
+      ->check(fedsim::util::FiniteRange(0, 3600))
       ->capture_default_str();
   run_cmd->add_flag("--quiet", run.quiet, "do not echo federate output (logs are still kept)");
   run_cmd->add_option("--scenario", run.scenario,

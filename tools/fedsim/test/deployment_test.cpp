@@ -53,6 +53,44 @@ TEST(Deployment, RejectsBadFilesWithFileLineAndField) {
   expect_error("name: x\nfederates: [{name: a, binary: b}\n", "bad.yaml:");
 }
 
+// Names become paths (out/<deployment>/, logs/<federate>.log) and the timing federate's
+// comma-separated --expect list: "a,b" was two expected federates, "../x" left the folder.
+TEST(Deployment, RefusesNamesThatAreNotPlainWords) {
+  const std::string rule = "must be 1-32 characters of A-Z a-z 0-9 _ -";
+  expect_error("name: x\nfederates:\n  - {name: \"a,b\", binary: b}\n",
+               "bad.yaml:3: federates[0].name: 'a,b' " + rule);
+  expect_error("name: x\nfederates:\n  - {name: ../x, binary: b}\n",
+               "bad.yaml:3: federates[0].name: '../x' " + rule);
+  expect_error("name: x\nfederates:\n  - {name: a b, binary: b}\n", "federates[0].name: 'a b'");
+  expect_error("name: x\nfederates:\n  - {name: \"\", binary: b}\n", "federates[0].name: ''");
+  expect_error("name: x\nfederates:\n  - {name: " + std::string(33, 'a') + ", binary: b}\n",
+               "federates[0].name: '" + std::string(33, 'a') + "' " + rule);
+  expect_error("name: ../../etc\nfederates: [{name: a, binary: b}]\n",
+               "bad.yaml:1: name: '../../etc' " + rule);
+  // The negative control: every allowed character, 32 of them.
+  const std::string longest = "Ab-_09" + std::string(26, 'z');
+  const auto d = parse_deployment("name: Run-1_x\nfederates: [{name: " + longest + ", binary: b}]\n",
+                                  "ok.yaml");
+  EXPECT_EQ(d.name, "Run-1_x");
+  EXPECT_EQ(d.federates.at(0).name, longest);
+}
+
+// yaml-cpp takes a list or a map as a key (reading it as text threw its own conversion error,
+// without file or field) and keeps duplicate keys (a lookup found the first: the later value was
+// silently ignored). Both are refused by util::ConfigNode for every config file.
+TEST(Deployment, RefusesNonScalarAndDuplicateKeysWithFileLineAndField) {
+  expect_error("name: x\n[a, b]: 1\nfederates: [{name: a, binary: b}]\n",
+               "bad.yaml:2: (top level): a key must be plain text, not a list");
+  expect_error("name: x\nfederates:\n  - name: a\n    binary: b\n    {k: v}: 1\n",
+               "bad.yaml:5: federates[0]: a key must be plain text, not a map");
+  expect_error("name: x\nmode: realtime\nfederates: [{name: a, binary: b}]\nmode: lockstep\n",
+               "bad.yaml:4: mode: given twice (first on line 2)");
+  expect_error("name: x\nfederates:\n  - name: a\n    binary: b\n    binary: c\n",
+               "bad.yaml:5: federates[0].binary: given twice (first on line 4)");
+  expect_error("name: x\ntiming: {args: [--frames, \"5\"], args: []}\nfederates: [{name: a, binary: b}]\n",
+               "bad.yaml:2: timing.args: given twice (first on line 2)");
+}
+
 TEST(Deployment, SubstitutesKnownVariablesAndRejectsUnknownOnes) {
   const std::map<std::string, std::string> vars{{"OUT_DIR", "/tmp/o"}, {"DATA_DIR", "/d"}};
   EXPECT_EQ(substitute("${OUT_DIR}/x.csv", vars), "/tmp/o/x.csv");
