@@ -161,14 +161,6 @@ Action parse_action(const ConfigNode& node, int event_line) {
   return command_action(node, event_line);
 }
 
-std::string read_whole_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<std::string> sorted_unique(std::vector<std::string> names) {
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
@@ -177,7 +169,7 @@ std::vector<std::string> sorted_unique(std::vector<std::string> names) {
 
 }  // namespace
 
-Scenario Scenario::load_file(const std::string& path) { return parse(read_whole_file(path), path); }
+Scenario Scenario::load_file(const std::string& path) { return parse(util::read_whole_file(path), path); }
 
 Scenario Scenario::parse(const std::string& text, const std::string& origin) {
   const auto root = ConfigNode::parse(text, origin);

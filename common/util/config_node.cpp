@@ -8,7 +8,6 @@
 
 namespace fedsim::util {
 
-namespace {
 std::string read_whole_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open file");
@@ -16,6 +15,8 @@ std::string read_whole_file(const std::string& path) {
   text << in.rdbuf();
   return text.str();
 }
+
+namespace {
 
 std::string join(const std::vector<std::string>& words) {
   std::string out;

@@ -16,6 +16,9 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A whole text file; throws ConfigError "<path>: cannot open file".
+std::string read_whole_file(const std::string& path);
+
 /// A YAML node plus where it came from (file, dotted field path), so that callers can fail with
 /// a message that points at the offending line. Reading is strict: unknown keys can be rejected,
 /// numbers are range-checked and units are part of the key names (e.g. `wing_area_m2`).
