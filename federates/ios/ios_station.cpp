@@ -12,7 +12,7 @@
 #include "ios/model/map_layers.hpp"
 #include "ios/station_ports.hpp"
 #include "ios/station_replay.hpp"
-#include "common/scenario/scenario.hpp"
+#include "ios/station_scenario.hpp"
 #include "common/util/config_node.hpp"
 #include "tools/topic/typed_flattener.hpp"
 
@@ -195,7 +195,9 @@ class Station {
   explicit Station(const StationOptions& options)
       : options_(options),
         db_(nav::NavDatabase::open(options.navdb_file.empty() ? nav::default_database_path() : options.navdb_file)),
-        server_(options.server) {
+        server_(options.server),
+        scenario_(options.scenarios.empty() ? std::filesystem::path(FEDSIM_DATA_DIR) / "scenarios"
+                                            : std::filesystem::path(options.scenarios)) {
     register_routes();
     server_.set_greeting([this] { return current_state(); });
   }
@@ -263,45 +265,28 @@ class Station {
     tick_mode_.store(static_cast<int>(f.mode), std::memory_order_relaxed);
     tick_period_s_.store(f.frame_period_s, std::memory_order_relaxed);
     ticks_.fetch_add(1, std::memory_order_release);
-    if (scenario_running_.load()) run_scenario(f);
+    if (scenario_.running()) run_scenario(f);
   }
 
-  // ---- Scenarios from the page ----
-
-  std::filesystem::path scenario_dir() const {
-    return options_.scenarios.empty() ? std::filesystem::path(FEDSIM_DATA_DIR) / "scenarios"
-                                      : std::filesystem::path(options_.scenarios);
+  /// The station's "timing" view in the registry, from the newest tick (under shared_.mutex).
+  void copy_tick_locked(double now) {
+    if (ticks_.load(std::memory_order_acquire) == 0) return;
+    shared_.fields.set("timing", "frame", static_cast<double>(tick_frame_.load()), now);
+    shared_.fields.set("timing", "sim_time_s", tick_sim_time_s_.load(), now);
+    shared_.fields.set("timing", "run_state", tick_run_state_.load(), now);
+    shared_.fields.set("timing", "mode", tick_mode_.load(), now);
+    shared_.fields.set("timing", "frame_period_s", tick_period_s_.load(), now);
   }
 
-  std::vector<std::string> scenario_files() const {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(scenario_dir(), ec)) {
-      if (e.path().extension() == ".yaml") names.push_back(e.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  /// One frame of the running scenario (frame thread). It never waits: when a push holds the
-  /// registry, this frame is skipped and a timed event fires in the next (its catch-up rule).
+  /// The page's scenario, one frame: stepped with the registry if it is free at once, its
+  /// commands sent afterwards (send_request takes the registry itself).
   void run_scenario(const runtime::FrameContext& f) {
-    std::vector<scenario::Action> actions;
-    {
-      std::unique_lock scenario_lock(scenario_mutex_, std::try_to_lock);
-      if (!scenario_lock || !scenario_) return;
-      {
-        std::unique_lock lock(shared_.mutex, std::try_to_lock);
-        if (!lock) return;
-        scenario_->set_frame_period(f.frame_period_s);
-        actions = scenario_->step(f.sim_time_s, shared_.lookup());
-      }
-      char at[32];
-      std::snprintf(at, sizeof at, "t=%.2f s: ", f.sim_time_s);
-      for (const auto& a : actions) scenario_fired_.push_back(at + a.text);
-      if (scenario_->finished()) scenario_running_.store(false);
-    }
-    // Sent with no scenario lock held (send_request takes the registry's).
+    const auto actions = scenario_.frame(f.sim_time_s, f.frame_period_s, [this](const auto& step) {
+      std::unique_lock lock(shared_.mutex, std::try_to_lock);
+      if (!lock) return false;
+      step(shared_.lookup());
+      return true;
+    });
     for (const auto& a : actions) {
       if (a.kind == scenario::Action::Kind::kLog) {
         if (federate_) federate_->log().info("scenario t={:.2f}s (line {}): {}", f.sim_time_s, a.line, a.text);
@@ -321,48 +306,19 @@ class Station {
       return {400, "application/json", error_body(std::string("the request is not JSON: ") + e.what()).dump()};
     }
     const std::string action = body.value("action", std::string());
-    std::lock_guard lock(scenario_mutex_);
     if (action == "stop") {
-      scenario_running_.store(false);
-      scenario_.reset();
+      scenario_.stop();
       return {200, "application/json", json{{"running", false}}.dump()};
     }
     if (action != "start") return {400, "application/json", error_body("scenario: action start or stop").dump()};
     const std::string name = body.value("name", std::string());
-    const auto files = scenario_files();
-    if (std::find(files.begin(), files.end(), name) == files.end()) {
-      return {400, "application/json", error_body("scenario: no file '" + name + "' in " + scenario_dir().string()).dump()};
-    }
     try {
-      scenario_ = scenario::Scenario::load_file((scenario_dir() / name).string());
-    } catch (const std::exception& e) {
-      return {400, "application/json", error_body(e.what()).dump()};  // file:line: field: problem
+      scenario_.start(name);
+    } catch (const std::invalid_argument& e) {
+      return {400, "application/json", error_body(e.what()).dump()};
     }
-    scenario_name_ = name;
-    scenario_fired_.clear();
-    scenario_running_.store(true);
     if (federate_) federate_->log().info("scenario {} started from {}", name, r.remote_address);
     return {200, "application/json", json{{"running", true}, {"name", name}}.dump()};
-  }
-
-  json scenario_state() {
-    std::lock_guard lock(scenario_mutex_);
-    json out{{"running", scenario_running_.load()}, {"name", scenario_name_}, {"files", scenario_files()}};
-    const std::size_t n = scenario_fired_.size();
-    out["fired"] = std::vector<std::string>(scenario_fired_.begin() + static_cast<long>(n > 12 ? n - 12 : 0),
-                                            scenario_fired_.end());
-    if (scenario_) out["waiting_for"] = scenario_->missing_fields();
-    return out;
-  }
-
-  /// The station's "timing" view in the registry, from the newest tick (under shared_.mutex).
-  void copy_tick_locked(double now) {
-    if (ticks_.load(std::memory_order_acquire) == 0) return;
-    shared_.fields.set("timing", "frame", static_cast<double>(tick_frame_.load()), now);
-    shared_.fields.set("timing", "sim_time_s", tick_sim_time_s_.load(), now);
-    shared_.fields.set("timing", "run_state", tick_run_state_.load(), now);
-    shared_.fields.set("timing", "mode", tick_mode_.load(), now);
-    shared_.fields.set("timing", "frame_period_s", tick_period_s_.load(), now);
   }
 
   void note_status(const msg::FederateStatus& s) {
@@ -408,7 +364,7 @@ class Station {
       if (stopping_.load()) break;
       std::string message;
       const ServerStatistics statistics = server_.statistics();  // before shared_.mutex: one lock order
-      const json scenario = scenario_state();                   // likewise
+      const json scenario = scenario_.state();                  // likewise
       {
         std::lock_guard lock(shared_.mutex);
         const double now = clock_s();
@@ -533,7 +489,7 @@ class Station {
 
   std::string current_state() {
     const ServerStatistics statistics = server_.statistics();
-    const json scenario = scenario_state();
+    const json scenario = scenario_.state();
     std::lock_guard lock(shared_.mutex);
     const double now = clock_s();
     copy_tick_locked(now);
@@ -567,11 +523,7 @@ class Station {
   runtime::Publisher<msg::SimCommand>* commands_ = nullptr;
   std::vector<std::shared_ptr<void>> taps_;
   std::unique_ptr<StationReplay> replay_;  // built once the federate's participant exists
-  std::mutex scenario_mutex_;              // the page's scenario, run on the frame thread
-  std::optional<scenario::Scenario> scenario_;
-  std::atomic<bool> scenario_running_{false};
-  std::string scenario_name_;
-  std::vector<std::string> scenario_fired_;
+  StationScenario scenario_;               // the page's scenario, run on the frame thread
   std::atomic<bool> stopping_{false};
   // The newest tick, as the frame thread left it.
   std::atomic<std::uint64_t> tick_frame_{0}, ticks_{0};
