@@ -50,7 +50,9 @@ fi
 # The browser tests' packages (tests/browser/package-lock.json: playwright-core, which drives
 # the system's chromium and downloads no browser).
 browser_tests="$(cd "$(dirname "$0")/../tests/browser" && pwd)"
-if [ ! -d "$browser_tests/node_modules/playwright-core" ]; then
+# (again when the lock file is newer than what was installed from it)
+if [ ! -f "$browser_tests/node_modules/.package-lock.json" ] ||
+   [ "$browser_tests/package-lock.json" -nt "$browser_tests/node_modules/.package-lock.json" ]; then
   echo "install-deps: npm ci in tests/browser"
   npm ci --prefix "$browser_tests" --no-audit --no-fund --loglevel=error
 fi
