@@ -8,6 +8,7 @@
 // that names the field as the user wrote it ("reposition: lat_deg: 95 is outside -90..90").
 #pragma once
 
+#include "common/frame_clock/run_control.hpp"
 #include "common/instructor/utc_time.hpp"
 
 #include <cstdint>
@@ -24,7 +25,7 @@ class RequestError : public std::invalid_argument {
 
 // ---- The SI requests (what is sent) ----
 
-enum class RunState { kRun, kFreeze, kReset };
+using timing::RunState;  // the frame clock's run states (common/frame_clock)
 struct RunStateRequest {
   RunState state = RunState::kFreeze;
 };

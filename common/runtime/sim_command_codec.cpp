@@ -8,15 +8,6 @@ namespace {
 
 using namespace instructor;
 
-msg::RunState to_msg(RunState s) {
-  switch (s) {
-    case RunState::kRun: return msg::RUN_STATE_RUN;
-    case RunState::kFreeze: return msg::RUN_STATE_FREEZE;
-    case RunState::kReset: return msg::RUN_STATE_RESET;
-  }
-  return msg::RUN_STATE_FREEZE;
-}
-
 msg::RepositionKind to_msg(RepositionRequest::Kind k) {
   switch (k) {
     case RepositionRequest::Kind::kPoint: return msg::REPOSITION_POINT;
@@ -30,7 +21,7 @@ struct Encode {
   msg::SimCommand& c;
   void operator()(const RunStateRequest& r) const {
     c.kind(msg::COMMAND_RUN_STATE);
-    c.run_state(to_msg(r.state));
+    c.run_state(runtime::to_msg(r.state));
   }
   void operator()(const RepositionRequest& r) const {
     c.kind(msg::COMMAND_REPOSITION);
@@ -96,6 +87,15 @@ struct Encode {
 };
 
 }  // namespace
+
+msg::RunState to_msg(timing::RunState s) {
+  switch (s) {
+    case timing::RunState::kRun: return msg::RUN_STATE_RUN;
+    case timing::RunState::kFreeze: return msg::RUN_STATE_FREEZE;
+    case timing::RunState::kReset: return msg::RUN_STATE_RESET;
+  }
+  return msg::RUN_STATE_FREEZE;
+}
 
 msg::SimCommand to_sim_command(const InstructorRequest& request) {
   msg::SimCommand c;

@@ -11,6 +11,9 @@
 
 namespace fedsim::runtime {
 
+/// The IDL run state of the frame clock's (the tick and the command carry the same three).
+msg::RunState to_msg(timing::RunState state);
+
 /// The sample for `request` (kind, target and payload; issuer and sequence number left to the
 /// sender). A snapshot request is stamped with the sender's CLOCK_REALTIME now.
 msg::SimCommand to_sim_command(const instructor::InstructorRequest& request);

@@ -2,6 +2,7 @@
 
 #include "common/runtime/log.hpp"
 #include "common/runtime/shutdown.hpp"
+#include "common/runtime/sim_command_codec.hpp"
 #include "common/util/monotonic_clock.hpp"
 
 #include <nlohmann/json.hpp>
@@ -15,15 +16,6 @@ namespace fedsim::timing {
 
 namespace {
 constexpr std::uint64_t kNsPerS = 1'000'000'000ull;
-
-msg::RunState to_msg(RunState s) {
-  switch (s) {
-    case RunState::kRun: return msg::RUN_STATE_RUN;
-    case RunState::kFreeze: return msg::RUN_STATE_FREEZE;
-    case RunState::kReset: return msg::RUN_STATE_RESET;
-  }
-  return msg::RUN_STATE_FREEZE;
-}
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -202,7 +194,7 @@ void TimingFederate::publish_tick_locked() {
   tick_.sim_frame(f.sim_frame);
   tick_.sim_time_s(f.sim_time_s);
   tick_.dt_s(f.dt_s);
-  tick_.run_state(to_msg(f.state));
+  tick_.run_state(runtime::to_msg(f.state));
   tick_.reset_count(f.reset_count);
   tracker_.start_frame(f.frame);
   tick_publish_ns_ = util::monotonic_ns();
