@@ -14,6 +14,8 @@ PACKAGES=(
   libsqlite3-dev zlib1g-dev
   # rendering, plots, images
   libosmesa6-dev libpng-dev libjpeg62-turbo-dev gnuplot-nox graphviz
+  # headless OpenGL through EGL (--gl egl|auto): libglvnd's libEGL and Mesa's EGL (surfaceless llvmpipe here)
+  libegl-dev libegl-mesa0
   # cockpit displays: text through FreeType with the DejaVu fonts
   libfreetype-dev fonts-dejavu-core
   # instructor station: HTTP + WebSocket server (civetweb), and its browser test (Debian's
@@ -23,8 +25,17 @@ PACKAGES=(
   libevdev-dev
   # tests
   libgtest-dev libgmock-dev
+  # another vendor's DDS for the external-trainer example and its interop tests (examples/,
+  # docs/interop.md): Eclipse Cyclone DDS's C library and its IDL compiler
+  cyclonedds-dev cyclonedds-tools
   # process tools used by tests (pgrep/pkill) and network namespaces
   procps iproute2 strace
+  # deploy/containers' checks read compose and Kubernetes YAML (tests/hosts/containers_check.py)
+  python3-yaml
+  # monitoring: tshark decodes fedsim's RTPS traffic (docs/monitoring.md and its test)
+  tshark
+  # DDS Security credentials (deploy/security/make-security.sh, docs/security.md)
+  openssl
 )
 
 missing=()
@@ -39,6 +50,8 @@ if [ ${#missing[@]} -eq 0 ]; then
 else
   echo "install-deps: installing ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
+  # tshark's package asks whether non-root users may capture: no (and never a prompt).
+  echo 'wireshark-common wireshark-common/install-setuid boolean false' | $SUDO debconf-set-selections
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi

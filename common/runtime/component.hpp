@@ -118,9 +118,19 @@ class Input final : public PortBase {
   const T* latest() const { return valid_ ? &value_ : nullptr; }
   /// Samples refreshed into this port so far (a new one each frame its writer wrote).
   std::uint64_t updates() const { return updates_; }
+  /// Writers matched to this port now (over DDS; -1 where the host does not know: in-process).
+  /// More than one writer of a topic a component expects one owner of is worth a warning.
+  int writers() const { return writers_ ? writers_() : -1; }
   void bind(PortBinder& binder) override { binder.bind(*this); }
+  /// Only samples `accept` returns true for reach this port: the host applies it as samples
+  /// arrive, so another's sample is never read and never counts as the frame's input (e.g. one
+  /// aircraft's controls on a topic keyed by aircraft). Set in the constructor, before binding;
+  /// over DDS it runs on a middleware thread.
+  void accept_only(std::function<bool(const T&)> accept) { accept_ = std::move(accept); }
 
   // Host side.
+  const std::function<bool(const T&)>& acceptor() const { return accept_; }
+  void set_writer_count(std::function<int()> count) { writers_ = std::move(count); }
   T& slot() { return value_; }
   void mark_updated() {
     valid_ = true;
@@ -132,6 +142,8 @@ class Input final : public PortBase {
   T value_{};
   bool valid_ = false;
   std::uint64_t updates_ = 0;
+  std::function<int()> writers_;
+  std::function<bool(const T&)> accept_;
 };
 
 /// A write port. write() hands the sample to the host at once (the DDS writer, or the

@@ -96,10 +96,15 @@ class Composition final : private PortBinder {
   void bind_input(Input<T>& port) {
     Channel<T>& c = channel<T>(*port.info().topic);
     ++c.readers;
+    port.set_writer_count([&c] { return c.writers; });
     bound_->refreshers.push_back([&c, &port] {
-      if (c.previous.empty()) return;
-      port.slot() = c.previous.back();
-      port.mark_updated();
+      // The last sample of the previous frame the port accepts (Input::accept_only).
+      for (auto it = c.previous.rbegin(); it != c.previous.rend(); ++it) {
+        if (port.acceptor() && !port.acceptor()(*it)) continue;
+        port.slot() = *it;
+        port.mark_updated();
+        return;
+      }
     });
   }
   template <class T>

@@ -1,9 +1,13 @@
 #include "common/runtime/dds_participant.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/log/Log.hpp>
 
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <regex>
 #include <set>
 
@@ -18,6 +22,82 @@ namespace {
 void silence_spurious_dynamic_type_errors() {
   static std::once_flag once;
   std::call_once(once, [] { fdds::Log::SetCategoryFilter(std::regex("^(?!DYN_TYPES$)")); });
+}
+
+// DDS Security (docs/security.md). With FEDSIM_SECURITY_DIR set, the participant authenticates
+// with its own certificate (builtin.PKI-DH), obeys the signed governance and permissions
+// (builtin.Access-Permissions) and encrypts what the governance says (builtin.AES-GCM-GMAC).
+// The folder is made by deploy/security/make-security.sh; the identity (a sub-folder) is
+// FEDSIM_SECURITY_IDENTITY or else the participant name (--name). A missing file is an error
+// naming it: a participant asked to be secure never starts unsecured. True if it is secured.
+bool add_security_properties(fdds::DomainParticipantQos& qos, const std::string& participant_name) {
+  namespace fs = std::filesystem;
+  const char* dir_env = std::getenv("FEDSIM_SECURITY_DIR");
+  if (!dir_env || !*dir_env) return false;
+  const char* identity_env = std::getenv("FEDSIM_SECURITY_IDENTITY");
+  const std::string identity = identity_env && *identity_env ? identity_env : participant_name;
+  static const std::regex plain_name("[A-Za-z0-9_][A-Za-z0-9_.-]*");
+  if (!std::regex_match(identity, plain_name)) {
+    throw DdsError("DDS Security identity '" + identity +
+                   "' (FEDSIM_SECURITY_IDENTITY or --name) is not a plain name: letters, digits, "
+                   "'_', '-', '.'");
+  }
+  const fs::path dir = fs::absolute(dir_env);
+  auto file_uri = [&](const fs::path& path) {
+    if (!fs::is_regular_file(path)) {
+      throw DdsError("DDS Security file missing: " + path.string() + " (FEDSIM_SECURITY_DIR=" +
+                     dir_env + ", identity '" + identity +
+                     "'; make it with deploy/security/make-security.sh)");
+    }
+    return "file://" + path.string();
+  };
+  const std::string pki = "dds.sec.auth.builtin.PKI-DH.";
+  const std::string access = "dds.sec.access.builtin.Access-Permissions.";
+  auto& properties = qos.properties().properties();
+  properties.emplace_back("dds.sec.auth.plugin", "builtin.PKI-DH");
+  properties.emplace_back(pki + "identity_ca", file_uri(dir / "identity_ca.pem"));
+  properties.emplace_back(pki + "identity_certificate", file_uri(dir / identity / "cert.pem"));
+  properties.emplace_back(pki + "private_key", file_uri(dir / identity / "key.pem"));
+  properties.emplace_back("dds.sec.access.plugin", "builtin.Access-Permissions");
+  properties.emplace_back(access + "permissions_ca", file_uri(dir / "permissions_ca.pem"));
+  properties.emplace_back(access + "governance", file_uri(dir / "governance.p7s"));
+  properties.emplace_back(access + "permissions", file_uri(dir / identity / "permissions.p7s"));
+  properties.emplace_back("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
+  return true;
+}
+
+// A secured participant reports each remote participant it refuses (no certificate, another
+// CA's, an invalid one): otherwise an intruder's attempts would leave no trace. Once per remote
+// participant (Fast DDS retries the handshake); the remote is known only by its GUID prefix.
+class AuthenticationReporter : public fdds::DomainParticipantListener {
+ public:
+  void onParticipantAuthentication(
+      fdds::DomainParticipant* participant,
+      eprosima::fastrtps::rtps::ParticipantAuthenticationInfo&& info) override {
+    if (info.status != eprosima::fastrtps::rtps::ParticipantAuthenticationInfo::UNAUTHORIZED_PARTICIPANT) {
+      return;
+    }
+    std::ostringstream prefix;
+    prefix << info.guid.guidPrefix;
+    {
+      std::lock_guard lock(mutex_);
+      if (!reported_.insert(prefix.str()).second) return;
+    }
+    std::ostringstream line;
+    line << "fedsim: DDS Security: participant '" << participant->get_qos().name().to_string()
+         << "' refused remote participant " << prefix.str()
+         << " (authentication failed: no certificate, another CA's, or an invalid one)\n";
+    std::cerr << line.str() << std::flush;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::set<std::string> reported_;
+};
+
+AuthenticationReporter& authentication_reporter() {
+  static AuthenticationReporter reporter;  // outlives every participant of the process
+  return reporter;
 }
 }  // namespace
 
@@ -52,11 +132,19 @@ DdsParticipant::DdsParticipant(const ParticipantOptions& options) : options_(opt
                    options_.qos_file);
   }
   qos.name(options_.name);
-  participant_ = factory->create_participant(options_.domain_id, qos);
+  participant_ = add_security_properties(qos, options_.name)
+                     ? factory->create_participant(options_.domain_id, qos, &authentication_reporter(),
+                                                   fdds::StatusMask::none())
+                     : factory->create_participant(options_.domain_id, qos);
   if (!participant_) {
+    const char* security = std::getenv("FEDSIM_SECURITY_DIR");
     throw DdsError("cannot create a DDS participant on domain " +
                    std::to_string(options_.domain_id) + " with profile '" +
-                   options_.participant_profile + "'");
+                   options_.participant_profile + "'" +
+                   (security && *security ? std::string(" and DDS Security from ") + security +
+                                                " (certificate, signatures and grant: see the "
+                                                "SECURITY errors above)"
+                                          : std::string()));
   }
   publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);

@@ -1,5 +1,6 @@
 #include "common/runtime/federate.hpp"
 
+#include "common/runtime/command_settings.hpp"
 #include "common/runtime/log.hpp"
 #include "common/runtime/shutdown.hpp"
 #include "common/frame_clock/silence_watch.hpp"
@@ -85,6 +86,8 @@ class Federate::PortBindings final : public PortBinder {
     const Topic<T> topic{*port.info().topic};
     const bool lockstep = port.info().lockstep_input && Stamped<T>;
     Subscription<T>& sub = federate_.subscribe(topic, port.info().qos, lockstep);
+    port.set_writer_count([&sub] { return sub.matched_writers(); });
+    if (port.acceptor()) sub.set_filter(port.acceptor());
     if constexpr (Stamped<T>) {
       refreshers_.push_back([&sub, &port, last = std::int64_t{-1}](std::uint64_t frame) mutable {
         if (!sub.latest_before(frame, port.slot())) return false;
@@ -103,24 +106,28 @@ class Federate::PortBindings final : public PortBinder {
         return true;
       });
     }
-    if (port.info().topic->every_frame) watch_for_silence(sub, refreshers_.back());
+    if (port.info().topic->every_frame) watch_for_silence(sub, refreshers_.back(), lockstep_input_of(sub.topic_name()));
   }
 
   /// Wraps a port's refresh with a frame-counted silence watch (no DDS deadline: see
   /// common/frame_clock/silence_watch.hpp): a matched writer that wrote nothing for
   /// --silent-frames frames is a fault of kind silent_writer, named by topic.
   template <class T>
-  void watch_for_silence(Subscription<T>& sub, std::function<bool(std::uint64_t)>& refresh) {
+  void watch_for_silence(Subscription<T>& sub, std::function<bool(std::uint64_t)>& refresh,
+                         std::shared_ptr<LockstepInput> lockstep) {
     const std::uint64_t limit = federate_.options().silent_frames;
     if (limit == 0) return;
     refresh = [&sub, inner = std::move(refresh), watch = timing::SilenceWatch(limit),
-               component = federate_.component_, log = federate_.log_](std::uint64_t frame) mutable {
+               component = federate_.component_, log = federate_.log_, lockstep](std::uint64_t frame) mutable {
       const bool updated = inner(frame);
-      switch (watch.observe(frame, sub.matched_writers() > 0, updated)) {
+      const auto event = watch.observe(frame, sub.matched_writers() > 0, updated);
+      if (lockstep) lockstep->silent.store(watch.silent());
+      switch (event) {
         case timing::SilenceWatch::Event::kSilent:
           component->report_port_fault(
               "silent_writer", sub.topic_name() + ": a matched writer wrote nothing for " +
-                                   std::to_string(watch.quiet_frames()) + " frames");
+                                   std::to_string(watch.quiet_frames()) +
+                                   " frames (frames no longer wait for it until it writes again)");
           break;
         case timing::SilenceWatch::Event::kResumed:
           log->warn("frame={} topic={}: its writer writes again", frame, sub.topic_name());
@@ -136,6 +143,15 @@ class Federate::PortBindings final : public PortBinder {
   void bind_output(Output<T>& port) {
     Publisher<T>& pub = federate_.publish(Topic<T>{*port.info().topic}, port.info().qos);
     port.set_sink([&pub](const T& sample) { return pub.publish(sample); });
+  }
+
+  /// The lockstep input registered for a topic (nullptr if it is not one).
+  std::shared_ptr<LockstepInput> lockstep_input_of(const std::string& topic) const {
+    std::lock_guard lock(federate_.frame_mutex_);
+    for (const auto& in : federate_.inputs_) {
+      if (in->topic == topic) return in;
+    }
+    return nullptr;
   }
 
   Federate& federate_;
@@ -160,7 +176,11 @@ Federate::Federate(const FederateOptions& options) : options_(options) {
       [this](const msg::FrameTick& tick, const auto&) { handle_tick(tick); });
   command_sub_ = std::make_unique<Subscription<msg::SimCommand>>(
       dds_, topics::sim_command, qos::kCommand,
-      [this](const msg::SimCommand& cmd, const auto&) { handle_command(cmd); });
+      // A setting comes twice, the original and the command holder's copy (command_settings.hpp):
+      // it is applied once. Deliveries of one reader are serialised: no lock for the filter.
+      [this, redelivery = RedeliveryFilter()](const msg::SimCommand& cmd, const auto&) mutable {
+        if (redelivery.first_delivery(cmd)) handle_command(cmd);
+      });
   publish_status(msg::FEDERATE_STARTING, "");
   log_->info("started domain={} profile={} pid={}", options_.dds.domain_id,
              options_.dds.participant_profile, getpid());
@@ -254,7 +274,7 @@ void Federate::on_lockstep_input() {
 bool Federate::inputs_ready_locked(std::uint64_t frame) const {
   const auto needed = static_cast<std::int64_t>(frame) - 1;
   return std::all_of(inputs_.begin(), inputs_.end(), [&](const auto& in) {
-    return in->matched_writers() == 0 || in->last_frame.load() >= needed;
+    return in->matched_writers() == 0 || in->silent.load() || in->last_frame.load() >= needed;
   });
 }
 

@@ -105,6 +105,9 @@ class Federate {
     std::string topic;
     std::function<int()> matched_writers;
     std::atomic<std::int64_t> last_frame{-1};
+    // Its matched writer is silent (the port's silence watch): frames stop waiting for it until
+    // it writes again, so a silent writer costs --silent-frames late frames, not every frame.
+    std::atomic<bool> silent{false};
   };
   class PortBindings;
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/runtime/dds_participant.hpp"
+#include "common/runtime/qos_mismatch.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -21,13 +22,15 @@ class Publisher : public fdds::DataWriterListener {
             std::string_view qos = {})
       : dds_(std::move(dds)), topic_name_(catalogue_topic.name()) {
     const std::string qos_profile = qos.empty() ? catalogue_topic.info.default_qos : std::string(qos);
+    qos_profile_ = qos_profile;
     const std::string& topic_name = topic_name_;
     auto* topic = dds_->template topic<T>(topic_name);
     writer_ = dds_->publisher()->create_datawriter_with_profile(topic, qos_profile, this,
                                                                 fdds::StatusMask::all());
     if (!writer_) {
       throw DdsError("cannot create a writer for " + topic_name + " with QoS profile '" +
-                     qos_profile + "' (is it defined in " + dds_->options().qos_file + "?)");
+                     qos_profile + "' (is it defined in " + dds_->options().qos_file +
+                     "? with FEDSIM_SECURITY_DIR: does the identity's DDS Security grant allow it?)");
     }
   }
   ~Publisher() override {
@@ -64,10 +67,18 @@ class Publisher : public fdds::DataWriterListener {
                               const fdds::PublicationMatchedStatus& status) override {
     matched_.store(status.current_count);
   }
+  void on_offered_incompatible_qos(fdds::DataWriter*,
+                                   const fdds::OfferedIncompatibleQosStatus& status) override {
+    qos_mismatch_.report(topic_name_, qos_profile_, status);
+  }
+  /// Readers found with QoS incompatible with this writer's (each logged: qos_mismatch.hpp).
+  std::uint32_t incompatible_readers() const { return qos_mismatch_.count(); }
 
  private:
   std::shared_ptr<DdsParticipant> dds_;
   std::string topic_name_;
+  std::string qos_profile_;
+  QosMismatchLog qos_mismatch_{"writer", "reader"};
   fdds::DataWriter* writer_ = nullptr;
   std::atomic<int> matched_{0};
 };

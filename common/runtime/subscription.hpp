@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/runtime/dds_participant.hpp"
+#include "common/runtime/qos_mismatch.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 
 #include <fastdds/dds/subscriber/DataReader.hpp>
@@ -31,13 +32,15 @@ class Subscription : public fdds::DataReaderListener {
                std::string_view qos = {}, SampleHandler on_sample = {})
       : dds_(std::move(dds)), topic_name_(catalogue_topic.name()), on_sample_(std::move(on_sample)) {
     const std::string qos_profile = qos.empty() ? catalogue_topic.info.default_qos : std::string(qos);
+    qos_profile_ = qos_profile;
     const std::string& topic_name = topic_name_;
     auto* topic = dds_->template topic<T>(topic_name);
     reader_ = dds_->subscriber()->create_datareader_with_profile(topic, qos_profile, this,
                                                                  fdds::StatusMask::all());
     if (!reader_) {
       throw DdsError("cannot create a reader for " + topic_name + " with QoS profile '" +
-                     qos_profile + "' (is it defined in " + dds_->options().qos_file + "?)");
+                     qos_profile + "' (is it defined in " + dds_->options().qos_file +
+                     "? with FEDSIM_SECURITY_DIR: does the identity's DDS Security grant allow it?)");
     }
   }
   ~Subscription() override { close(); }
@@ -82,6 +85,8 @@ class Subscription : public fdds::DataReaderListener {
   std::uint64_t received_count() const { return received_.load(); }
   int matched_writers() const { return matched_.load(); }
   std::uint64_t deadline_misses() const { return deadline_misses_.load(); }
+  /// Writers found with QoS incompatible with this reader's (each logged: qos_mismatch.hpp).
+  std::uint32_t incompatible_writers() const { return qos_mismatch_.count(); }
   const std::string& topic_name() const { return topic_name_; }
 
   bool wait_for_writers(int count, std::chrono::milliseconds timeout) const {
@@ -93,6 +98,11 @@ class Subscription : public fdds::DataReaderListener {
     return true;
   }
   void set_liveliness_handler(LivelinessHandler handler) { on_liveliness_ = std::move(handler); }
+  /// Only samples `accept` returns true for are kept, counted and handed on (Input::accept_only).
+  void set_filter(std::function<bool(const T&)> accept) {
+    std::lock_guard lock(latest_mutex_);
+    accept_ = std::move(accept);
+  }
 
   void on_data_available(fdds::DataReader* reader) override {
     fdds::SampleInfo info;
@@ -100,6 +110,7 @@ class Subscription : public fdds::DataReaderListener {
       if (!info.valid_data) continue;
       {
         std::lock_guard lock(latest_mutex_);
+        if (accept_ && !accept_(scratch_)) continue;
         latest_ = scratch_;
         has_latest_ = true;
         if constexpr (Stamped<T>) {
@@ -124,12 +135,19 @@ class Subscription : public fdds::DataReaderListener {
                              const fdds::LivelinessChangedStatus& status) override {
     if (on_liveliness_) on_liveliness_(status);
   }
+  void on_requested_incompatible_qos(fdds::DataReader*,
+                                     const fdds::RequestedIncompatibleQosStatus& status) override {
+    qos_mismatch_.report(topic_name_, qos_profile_, status);
+  }
 
  private:
   std::shared_ptr<DdsParticipant> dds_;
   std::string topic_name_;
+  std::string qos_profile_;
+  QosMismatchLog qos_mismatch_{"reader", "writer"};
   SampleHandler on_sample_;
   LivelinessHandler on_liveliness_;
+  std::function<bool(const T&)> accept_;  // guarded by latest_mutex_
   fdds::DataReader* reader_ = nullptr;
   std::mutex close_mutex_;
   T scratch_;  // reused for every take: bounded types never allocate here

@@ -6,7 +6,7 @@ namespace fedsim::runtime {
 
 const std::vector<std::string_view>& qos::all() {
   static const std::vector<std::string_view> profiles = {kTick,         kFrameDone, kState,
-                                                         kLockstepData, kCommand,   kStatus, kPicture};
+                                                         kLockstepData, kCommand,   kStatus, kPicture, kPilotControls};
   return profiles;
 }
 
@@ -24,6 +24,14 @@ Topic<T> frame_topic(const std::string& name, std::string_view qos, bool lockste
                      std::string description) {
   Topic<T> t = topic<T>(name, qos, lockstep_input, std::move(description));
   t.info.every_frame = true;
+  return t;
+}
+
+/// A topic each writer keys by its own name (one instance per writer), e.g. per visual channel.
+template <class T>
+Topic<T> per_writer_topic(const std::string& name, std::string_view qos, std::string description) {
+  Topic<T> t = topic<T>(name, qos, false, std::move(description));
+  t.info.instance_per_writer = true;
   return t;
 }
 }  // namespace
@@ -44,8 +52,11 @@ const Topic<msg::FederateStatus> federate_status =
                                "each federate's state, frame statistics and faults");
 // Simulation data.
 const Topic<msg::PilotControls> pilot_controls =
-    frame_topic<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS, qos::kLockstepData, true,
-                              "inceptor, lever and switch positions");
+    frame_topic<msg::PilotControls>(msg::TOPIC_PILOT_CONTROLS, qos::kPilotControls, true,
+                              "inceptor, lever and switch positions (one owner per aircraft: exclusive ownership)");
+const Topic<msg::PilotControls> applied_controls = frame_topic<msg::PilotControls>(
+    msg::TOPIC_APPLIED_CONTROLS, qos::kState, true,
+    "the controls the flight model flew in each frame (after checks, ownership, trim, autopilot)");
 const Topic<msg::AircraftState> aircraft_state =
     frame_topic<msg::AircraftState>(msg::TOPIC_AIRCRAFT_STATE, qos::kState, true,
                               "position, velocity, attitude, rates, air data of each aircraft");
@@ -63,16 +74,16 @@ const Topic<msg::MotionPlatformState> motion_state = frame_topic<msg::MotionPlat
     msg::TOPIC_MOTION_STATE, qos::kState, true, "motion platform pose and actuator lengths");
 const Topic<msg::ControlLoadingState> control_loading_state = frame_topic<msg::ControlLoadingState>(
     msg::TOPIC_CONTROL_LOADING_STATE, qos::kState, true, "control loader positions and forces");
-const Topic<msg::VisualChannelStatus> visual_status = topic<msg::VisualChannelStatus>(
-    msg::TOPIC_VISUAL_STATUS, qos::kStatus, false, "each image generator's render time and age");
-const Topic<msg::VisualPicture> visual_picture = topic<msg::VisualPicture>(
-    msg::TOPIC_VISUAL_PICTURE, qos::kPicture, false,
+const Topic<msg::VisualChannelStatus> visual_status = per_writer_topic<msg::VisualChannelStatus>(
+    msg::TOPIC_VISUAL_STATUS, qos::kStatus, "each image generator's render time and age");
+const Topic<msg::VisualPicture> visual_picture = per_writer_topic<msg::VisualPicture>(
+    msg::TOPIC_VISUAL_PICTURE, qos::kPicture,
     "each image generator's live picture (JPEG, a few per second)");
 
 const std::vector<const TopicInfo*>& all() {
   static const std::vector<const TopicInfo*> every = {
       &frame_tick.info,     &frame_done.info,       &sim_command.info,
-      &federate_status.info, &pilot_controls.info,  &aircraft_state.info,
+      &federate_status.info, &pilot_controls.info,  &applied_controls.info, &aircraft_state.info,
       &engine_state.info,   &navigation_state.info, &autopilot_state.info, &motion_state.info,
       &control_loading_state.info, &visual_status.info, &visual_picture.info, &replay_state.info};
   return every;

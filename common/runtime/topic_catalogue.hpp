@@ -21,6 +21,7 @@ inline constexpr std::string_view kTick = "tick";                  // best-effor
 inline constexpr std::string_view kFrameDone = "frame_done";       // best effort, keyed by federate
 inline constexpr std::string_view kState = "state";                // best effort, keep last 1
 inline constexpr std::string_view kLockstepData = "lockstep_data"; // reliable, transient local
+inline constexpr std::string_view kPilotControls = "pilot_controls"; // lockstep_data + exclusive ownership
 inline constexpr std::string_view kCommand = "command";            // reliable, transient local
 inline constexpr std::string_view kStatus = "status";              // reliable, liveliness
 inline constexpr std::string_view kPicture = "picture";            // best effort, keep last 1, large
@@ -39,6 +40,8 @@ struct TopicInfo {
   std::string description;
   bool every_frame = false;     // its writers write once per frame: a reader reports a matched
                                 // writer silent for --silent-frames frames (a silent writer)
+  bool instance_per_writer = false;  // keyed by its writer (a visual channel's name): several
+                                     // writers in one federation each own their own instances
 };
 
 /// A topic with its message type T.
@@ -57,6 +60,7 @@ extern const Topic<msg::FrameDone> frame_done;
 extern const Topic<msg::SimCommand> sim_command;
 extern const Topic<msg::FederateStatus> federate_status;
 extern const Topic<msg::PilotControls> pilot_controls;
+extern const Topic<msg::PilotControls> applied_controls;
 extern const Topic<msg::AircraftState> aircraft_state;
 extern const Topic<msg::EngineState> engine_state;
 extern const Topic<msg::NavigationState> navigation_state;
@@ -84,7 +88,8 @@ bool visit(std::string_view name, Visitor&& visitor) {
     return true;
   };
   return try_one(frame_tick) || try_one(frame_done) || try_one(sim_command) ||
-         try_one(federate_status) || try_one(pilot_controls) || try_one(aircraft_state) ||
+         try_one(federate_status) || try_one(pilot_controls) || try_one(applied_controls) ||
+         try_one(aircraft_state) ||
          try_one(engine_state) || try_one(navigation_state) || try_one(autopilot_state) || try_one(motion_state) ||
          try_one(control_loading_state) || try_one(visual_status) || try_one(visual_picture) ||
          try_one(replay_state);

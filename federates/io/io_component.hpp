@@ -39,7 +39,8 @@ class IoComponent final : public runtime::Component {
 
  private:
   // ---- Ports -------------------------------------------------------------------------------
-  // writes fedsim/pilot_controls every frame (lockstep_data: reliable, transient local).
+  // writes fedsim/pilot_controls every frame (profile pilot_controls: reliable, transient local,
+  // EXCLUSIVE ownership with strength 10: a stronger outside writer takes the aircraft over).
   runtime::Output<msg::PilotControls>& pilot_controls_;
   // reads fedsim/control_loading_state (lockstep input) with --loader-in-the-loop only: its
   // positions are the primaries this federate reports.

@@ -16,7 +16,7 @@ inline constexpr StationRead kStationReads[] = {
     {"fedsim/aircraft_state", "state"},        {"fedsim/engine_state", "state"},
     {"fedsim/navigation_state", "state"},      {"fedsim/autopilot_state", "state"},
     {"fedsim/motion_state", "state"},          {"fedsim/control_loading_state", "state"},
-    {"fedsim/visual_status", "state"},         {"fedsim/pilot_controls", "state"},
+    {"fedsim/visual_status", "state"},         {"fedsim/pilot_controls", "pilot_controls"},
     {"fedsim/visual_picture", "picture"},
 };
 

@@ -46,7 +46,11 @@ int main(int argc, char** argv) {
   app.add_flag("--shutdown-on-exit", options.shutdown_on_exit,
                "tell every federate to stop when the timing federate stops");
   app.add_option("--summary-json", options.summary_json, "write the run summary JSON here");
+  bool no_hold = false;
+  app.add_flag("--no-hold-commands", no_hold,
+               "do not keep the latest settings (weather, failures...) for federates that join late");
   CLI11_PARSE(app, argc, argv);
+  options.hold_commands = !no_hold;
   try {
     fedsim::timing::TimingFederate timing(options);
     return timing.run();

@@ -28,7 +28,8 @@ TimingFederate::TimingFederate(TimingOptions options)
     : options_(std::move(options)),
       tracker_(options_.expect),
       run_control_(1.0 / options_.rate_hz,
-                   options_.start == "freeze" ? RunState::kFreeze : RunState::kRun) {
+                   options_.start == "freeze" ? RunState::kFreeze : RunState::kRun),
+      loss_watch_(static_cast<std::uint64_t>(options_.ack_timeout_s * kNsPerS)) {
   runtime::install_shutdown_handler();
   log_ = runtime::make_logger(options_.common.name, options_.common.log_level);
   lockstep_ = options_.mode == "lockstep";
@@ -83,6 +84,7 @@ void TimingFederate::flush_status_messages() {
     messages.swap(status_messages_);
   }
   for (const auto& m : messages) publish_status(msg::FEDERATE_RUNNING, m);
+  publish_lost_statuses();
   const std::uint64_t now = util::monotonic_ns();
   if (now >= next_status_ns_) {  // the once-a-second heartbeat with the frame count
     next_status_ns_ = now + kNsPerS;
@@ -90,22 +92,74 @@ void TimingFederate::flush_status_messages() {
   }
 }
 
+/// The lost federate's own status instance, in state LOST (the state the IDL reserves for the
+/// timing federate's report): a monitor (fedsim run's progress line, the instructor station)
+/// sees it until the federate reports again.
+void TimingFederate::publish_lost_statuses() {
+  std::vector<std::pair<std::string, std::uint32_t>> lost;
+  {
+    std::lock_guard lock(mutex_);
+    lost.swap(lost_to_publish_);
+  }
+  for (const auto& [name, pid] : lost) {
+    msg::FederateStatus status;
+    status.federate(name);
+    status.state(msg::FEDERATE_LOST);
+    status.message("reported lost by " + options_.common.name);
+    status.pid(pid);
+    status_pub_->publish(status);
+  }
+}
+
 bool TimingFederate::status_due_locked() const {
-  return !status_messages_.empty() || util::monotonic_ns() >= next_status_ns_;
+  return !status_messages_.empty() || !lost_to_publish_.empty() ||
+         util::monotonic_ns() >= next_status_ns_;
+}
+
+double TimingFederate::run_time_s_locked() const {
+  return start_ns_ == 0 ? 0.0 : (util::monotonic_ns() - start_ns_) * 1e-9;
+}
+
+void TimingFederate::rejoin_locked(const std::string& federate, const std::string& how) {
+  tracker_.readmit(federate);
+  const std::uint64_t first_frame = tracker_.frame() + 1;
+  if (!loss_watch_.record_rejoined(federate, first_frame, run_time_s_locked())) return;
+  summary_.rejoined.push_back(federate);
+  log_->warn("federate={} rejoined ({}): expected again from frame={}", federate, how, first_frame);
+  status_messages_.push_back("rejoined " + federate + " from frame " + std::to_string(first_frame));
 }
 
 void TimingFederate::on_status(const msg::FederateStatus& status) {
   const std::string name = status.federate().to_string();
   if (name == options_.common.name) return;
+  if (status.state() == msg::FEDERATE_LOST) return;  // a report about it (ours), not from it
   std::lock_guard lock(mutex_);
+  const bool member = std::find(options_.expect.begin(), options_.expect.end(), name) !=
+                      options_.expect.end();
   switch (status.state()) {
     case msg::FEDERATE_READY:
-    case msg::FEDERATE_RUNNING:
+    case msg::FEDERATE_RUNNING: {
       ready_.insert(name);
+      const std::uint32_t old_pid = loss_watch_.pid_of(name);
+      const bool replaced = loss_watch_.process_replaced(name, status.pid());
+      if (!member || !started_ || stopping_) break;
+      // A new process under the name: the old one is gone, even if it was never found silent
+      // (a quick restart answers the repeated tick before the acknowledgement timeout).
+      if (replaced && !loss_watch_.is_lost(name)) {
+        mark_lost_locked(name, "its process (pid " + std::to_string(old_pid) + ") was replaced");
+      }
+      if (loss_watch_.is_lost(name)) {
+        rejoin_locked(name, replaced ? "new process pid " + std::to_string(status.pid())
+                                     : "reports again, pid " + std::to_string(status.pid()));
+      }
       break;
+    }
     case msg::FEDERATE_STOPPING:
     case msg::FEDERATE_FAILED:
-      if (tracker_.expects(name) && started_ && !stopping_) {
+      // A member that stops because the federation is told to stop is not lost (the timing
+      // federate may see its status before the SHUTDOWN command itself).
+      if (member && !loss_watch_.is_lost(name) && started_ && !stopping_ &&
+          status.message().to_string().rfind("shutdown command", 0) != 0) {
         mark_lost_locked(name, status.state() == msg::FEDERATE_FAILED
                                    ? "failed: " + status.message().to_string()
                                    : "stopped");
@@ -118,7 +172,21 @@ void TimingFederate::on_status(const msg::FederateStatus& status) {
   cv_.notify_all();
 }
 
+/// Republishes a setting it does not hold yet (decided under holder_mutex_, written outside
+/// it: the write may come straight back to this process's own reader, on this thread).
+void TimingFederate::hold_command(const msg::SimCommand& command) {
+  {
+    std::lock_guard lock(holder_mutex_);
+    if (!holder_.offer(command)) return;
+  }
+  log_->info("holding command kind={} target='{}' seq={} from={} for late joiners",
+             static_cast<int>(command.kind()), command.target().to_string(),
+             command.sequence_number(), command.issuer().to_string());
+  command_pub_->publish(command);
+}
+
 void TimingFederate::on_command(const msg::SimCommand& command) {
+  if (options_.hold_commands) hold_command(command);
   std::lock_guard lock(mutex_);
   if (command.kind() == msg::COMMAND_SHUTDOWN) {
     if (command.issuer().to_string() != options_.common.name) {
@@ -142,7 +210,7 @@ void TimingFederate::on_ack(const msg::FrameDone& ack, const runtime::fdds::Samp
   std::lock_guard lock(mutex_);
   const std::string name = ack.federate().to_string();
   remember_writer_locked(info.publication_handle, name);
-  last_ack_ns_[name] = now;
+  if (!loss_watch_.is_lost(name)) loss_watch_.acknowledged(name);
   if (!tracker_.acknowledge(name, ack.frame())) return;
   summary_.all_acked.add_ns(now - tick_publish_ns_);
   // Lockstep as fast as possible: issue the next tick right here, on the listener thread.
@@ -156,8 +224,15 @@ void TimingFederate::on_ack(const msg::FrameDone& ack, const runtime::fdds::Samp
 void TimingFederate::on_liveliness(const runtime::fdds::LivelinessChangedStatus& status) {
   if (status.not_alive_count_change <= 0) return;
   std::lock_guard lock(mutex_);
+  if (!started_ || stopping_) return;
+  bool known = false;
+  for (const auto& entry : writers_) known |= entry.first == status.last_publication_handle;
+  log_->warn("frame_done liveliness: a writer is no longer alive (alive={} not_alive={}, {})",
+             status.alive_count, status.not_alive_count,
+             known ? "a member's" : "a writer that never acknowledged");
   for (const auto& [handle, federate] : writers_) {
-    if (handle == status.last_publication_handle && tracker_.expects(federate)) {
+    if (handle == status.last_publication_handle && tracker_.expects(federate) &&
+        !loss_watch_.is_lost(federate)) {
       mark_lost_locked(federate, "liveliness lost (process gone or hung)");
     }
   }
@@ -174,9 +249,13 @@ void TimingFederate::remember_writer_locked(const eprosima::fastrtps::rtps::Inst
 
 void TimingFederate::mark_lost_locked(const std::string& federate, const std::string& why) {
   summary_.lost.push_back(federate);
+  loss_watch_.record_lost(federate, tracker_.frame(), run_time_s_locked(), why);
   log_->error("federate={} lost at frame={}: {}", federate, tracker_.frame(), why);
   const bool completed = tracker_.remove(federate);
-  status_messages_.push_back("lost " + federate + ": " + why);  // published by the loop
+  // Published by the loop: here, under mutex_, a write could deadlock (see publish_status).
+  status_messages_.push_back("lost " + federate + " at frame " + std::to_string(tracker_.frame()) +
+                             ": " + why);
+  lost_to_publish_.emplace_back(federate, loss_watch_.pid_of(federate));
   if (options_.stop_on_lost) {
     stopping_ = true;
     stop_reason_ = "federate " + federate + " lost";
@@ -198,6 +277,7 @@ void TimingFederate::publish_tick_locked() {
   tick_.reset_count(f.reset_count);
   tracker_.start_frame(f.frame);
   tick_publish_ns_ = util::monotonic_ns();
+  loss_watch_.tick_published(tracker_.expected(), tick_publish_ns_);
   last_resend_ns_ = tick_publish_ns_;
   tick_.publish_time_ns(tick_publish_ns_);
   tick_pub_->publish(tick_);
@@ -221,15 +301,14 @@ bool TimingFederate::should_stop_locked() const {
          util::monotonic_ns() - start_ns_ >= options_.common.duration_s * kNsPerS;
 }
 
+/// Silence, measured from the first tick a federate did not acknowledge (model/loss_watch.hpp).
 void TimingFederate::check_ack_timeout_locked(std::uint64_t now_ns) {
-  if (tracker_.complete()) return;
-  const auto timeout_ns = static_cast<std::uint64_t>(options_.ack_timeout_s * kNsPerS);
-  for (const auto& name : tracker_.missing()) {
-    const auto it = last_ack_ns_.find(name);
-    const std::uint64_t since = it != last_ack_ns_.end() ? std::max(it->second, start_ns_) : start_ns_;
-    if (now_ns - std::max(since, tick_publish_ns_) >= timeout_ns) {
-      mark_lost_locked(name, "no acknowledgement for " + std::to_string(options_.ack_timeout_s) + " s");
-    }
+  for (const auto& name : loss_watch_.overdue(now_ns)) {
+    if (!tracker_.expects(name)) continue;
+    char why[96];
+    std::snprintf(why, sizeof(why), "no acknowledgement for %.2f s (--ack-timeout %g s)",
+                  loss_watch_.age_ns(name, now_ns) * 1e-9, options_.ack_timeout_s);
+    mark_lost_locked(name, why);
   }
 }
 
@@ -272,7 +351,11 @@ int TimingFederate::run() {
   }
   log_->info("federation ready: starting ticks");
   publish_status(msg::FEDERATE_RUNNING, "");
-  start_ns_ = util::monotonic_ns();
+  {
+    std::lock_guard lock(mutex_);
+    start_ns_ = util::monotonic_ns();
+    started_ = true;
+  }
   if (lockstep_) {
     run_lockstep();
   } else {
@@ -318,8 +401,9 @@ void TimingFederate::run_realtime() {
         log_->warn("overrun frame={} missing={} overruns={}", tracker_.frame(),
                    join(tracker_.missing()), summary_.overruns);
       }
-      check_ack_timeout_locked(now);
     }
+    // Every frame, not only on an overrun: the frame is complete without a lost federate.
+    check_ack_timeout_locked(now);
     if (n > 0) summary_.period_error.add_ns(now - deadline);
     publish_tick_locked();
     if (status_due_locked()) {
@@ -370,8 +454,16 @@ void TimingFederate::run_lockstep() {
 }
 
 TimingSummary TimingFederate::summary() const {
-  std::lock_guard lock(mutex_);
-  return summary_;
+  TimingSummary s;
+  {
+    std::lock_guard lock(mutex_);
+    s = summary_;
+    s.still_lost = loss_watch_.still_lost();
+    s.events = loss_watch_.events();
+  }
+  std::lock_guard lock(holder_mutex_);
+  s.held_settings = holder_.size();
+  return s;
 }
 
 std::string TimingFederate::summary_json() const {
@@ -386,6 +478,19 @@ std::string TimingFederate::summary_json() const {
   j["overruns"] = s.overruns;
   j["resent_ticks"] = s.resent_ticks;
   j["lost"] = s.lost;
+  j["rejoined"] = s.rejoined;
+  j["still_lost"] = s.still_lost;
+  j["ack_timeout_s"] = options_.ack_timeout_s;
+  j["membership"] = nlohmann::json::array();
+  for (const auto& e : s.events) {
+    nlohmann::json event = {{"event", e.kind == MembershipEvent::Kind::kLost ? "lost" : "rejoined"},
+                            {"federate", e.federate},
+                            {"frame", e.frame},
+                            {"t_s", e.t_s}};
+    if (!e.why.empty()) event["why"] = e.why;
+    j["membership"].push_back(event);
+  }
+  j["held_settings"] = s.held_settings;
   j["all_acked_us"] = {{"p50", s.all_acked.percentile_us(50)},
                        {"p99", s.all_acked.percentile_us(99)},
                        {"max", s.all_acked.max_us()},

@@ -6,7 +6,9 @@
 #include "flight/federate/start_options.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
+#include "displays/model/composite.hpp"
 #include "visual/model/channel_file.hpp"
+#include "visual/model/egl_context.hpp"
 #include "visual/model/eye_extrapolation.hpp"
 
 #include <algorithm>
@@ -99,6 +101,8 @@ std::optional<std::string> apply_weather(const msg::WeatherSettings& w, Environm
 VisualComponent::VisualComponent(std::string name, VisualSetup setup)
     : Component(std::move(name)),
       aircraft_state_(reads(runtime::topics::aircraft_state, setup.state_qos)),
+      autopilot_state_(setup.hud ? &reads(runtime::topics::autopilot_state, setup.state_qos) : nullptr),
+      navigation_state_(setup.hud ? &reads(runtime::topics::navigation_state, setup.state_qos) : nullptr),
       visual_status_(writes(runtime::topics::visual_status)),
       visual_picture_(writes(runtime::topics::visual_picture)),
       setup_(std::move(setup)) {
@@ -125,6 +129,7 @@ VisualComponent::VisualComponent(std::string name, VisualSetup setup)
              setup_.channel.heading_offset_rad * units::kRadToDeg, setup_.channel.eye_offset_body_m.x(),
              setup_.channel.eye_offset_body_m.y(), setup_.channel.eye_offset_body_m.z(), setup_.render_hz,
              setup_.stream_hz, setup_.renderer->description());
+  if (!setup_.gl_note.empty()) log().info("--gl auto: {}", setup_.gl_note);
 }
 
 void VisualComponent::on_command(const msg::SimCommand& command) {
@@ -214,13 +219,34 @@ std::optional<VisualComponent::Drawn> VisualComponent::render(const runtime::Fra
   }
   const EyePose eye = extrapolate(moving_pose_of(*state), span_s, "fedsim/aircraft_state");
   update_sun(frame.sim_time_s, eye.lat_rad, eye.lon_rad);
-  const RenderStats stats = setup_.renderer->render(setup_.channel, eye, setup_.environment, image_);
+  RenderStats stats = setup_.renderer->render(setup_.channel, eye, setup_.environment, image_);
+  if (setup_.hud) {
+    const std::int64_t hud_start_ns = monotonic_ns();
+    draw_hud(*state, eye);
+    stats.render_time_ms += static_cast<double>(monotonic_ns() - hud_start_ns) / 1e6;
+  }
   have_image_ = true;
   image_stamp_ = state->stamp();
   ++frames_rendered_;
   mean_render_s_ = frames_rendered_ == 1 ? stats.render_time_ms / 1000.0
                                          : 0.9 * mean_render_s_ + 0.1 * stats.render_time_ms / 1000.0;
   return Drawn{stats, std::clamp(span_s, 0.0, kMaxExtrapolationS), start_ns};
+}
+
+void VisualComponent::draw_hud(const msg::AircraftState& state, const EyePose& eye) {
+  displays::HudInputs in = displays::hud_inputs(state, navigation_state_->latest(), autopilot_state_->latest(),
+                                                setup_.hud_context);
+  // The attitude the scene was drawn with (carried forward to the display time), so that the
+  // conformal symbols fall on the scene's horizon and runway.
+  in.pitch_rad = eye.theta_rad;
+  in.roll_rad = eye.phi_rad;
+  in.heading_true_rad = std::fmod(eye.psi_rad + 2.0 * units::kTwoPi, units::kTwoPi);
+  try {
+    setup_.hud->render_hud(in, setup_.channel, hud_image_);
+    displays::composite_over(image_, hud_image_);
+  } catch (const std::invalid_argument& e) {
+    report_fault("input_rejected", std::string("HUD not drawn: ") + e.what());
+  }
 }
 
 void VisualComponent::publish_status(const runtime::FrameContext& frame, const RenderStats& stats, double state_age_s,
@@ -321,6 +347,8 @@ struct Options {
   std::string utc = "2026-06-21T19:00:00";
   std::string lights = "on";
   std::string state_qos;
+  bool hud = false;
+  std::string gl = "auto";
 };
 
 // The airport's ends: those with an ILS drawn as precision CAT I ends (markings, CAT I approach
@@ -384,6 +412,10 @@ runtime::FederateProgram program() {
         ->capture_default_str();
     app.add_option("--lights", o->lights, "airport lights")->check(CLI::IsMember({"on", "off"}))->capture_default_str();
     app.add_option("--state-qos", o->state_qos, "QoS profile of the aircraft-state reader (default: the catalogue's)");
+    app.add_flag("--hud", o->hud, "draw the head-up display over the picture (the pilot's centre channel)");
+    app.add_option("--gl", o->gl, "OpenGL context: osmesa (CPU), egl (a GPU's EGL device, else Mesa surfaceless), "
+                                  "auto (a GPU's EGL device, else OSMesa)")
+        ->check(CLI::IsMember({"osmesa", "egl", "auto"}))->capture_default_str();
   };
   p.make_component = [o](const runtime::FederateOptions& common) {
     VisualSetup setup;
@@ -395,7 +427,9 @@ runtime::FederateProgram program() {
     const nav::NavDatabase db = nav::NavDatabase::open(o->navdb.empty() ? nav::default_database_path() : o->navdb);
     const std::vector<nav::RunwayEndRecord> ends = db.airport_runways(o->airport);
     if (ends.empty()) throw std::invalid_argument("--airport " + o->airport + ": no runways in " + db.path());
-    setup.renderer = std::make_unique<Renderer>(build_airport_scene(ends, scene_options(db, *o)));
+    const GlBackend backend = *parse_gl_backend(o->gl);
+    setup.renderer = std::make_unique<Renderer>(build_airport_scene(ends, scene_options(db, *o)),
+                                                make_gl_context(backend, &setup.gl_note));
     setup.render_hz = o->render_hz;
     setup.stream_hz = o->stream_hz;
     setup.jpeg = {o->jpeg_quality, o->stream_downscale};
@@ -415,6 +449,12 @@ runtime::FederateProgram program() {
     setup.time_of_day = *utc;
     setup.start_utc_ns = utc_ns();
     setup.state_qos = o->state_qos;
+    if (o->hud) {
+      setup.hud = std::make_unique<displays::DisplayRenderer>(make_gl_context(backend), displays::default_font_paths());
+      const nav::RunwayEndRecord& first = ends.front();
+      setup.hud_context.magnetic_variation_rad =
+          displays::nearby_navaids(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0).magnetic_variation_rad;
+    }
     return std::unique_ptr<runtime::Component>(std::make_unique<VisualComponent>(common.name, std::move(setup)));
   };
   return p;

@@ -8,6 +8,13 @@
 //   writes   fedsim/visual_status    per image: render time, the age of the state drawn, rate
 //   writes   fedsim/visual_picture   a JPEG of the picture every 1/--stream-hz (0: none)
 //   commands weather (visibility, cloud base), time of day (sun, lights), snapshot (a PNG)
+//   with --hud also reads fedsim/autopilot_state and fedsim/navigation_state (the FD cue)
+//
+// HUD (--hud, seed 5.9): the displays model's HUD (federates/displays) drawn for this channel's
+// camera (its ChannelConfig: size, field of view, offsets) from the same extrapolated eye
+// attitude the scene was drawn with, composited over the picture (premultiplied "over") before
+// it is published, snapshot or written, so that the flight-path vector and the horizon line
+// lie on the scene's.
 //
 // Render slots: an image whenever the frame number crosses a multiple of 1/--render-hz of the
 // frame period, counted in frames (so it renders in FREEZE too, and a lockstep run renders the
@@ -23,6 +30,8 @@
 
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
+#include "displays/display_mapping.hpp"
+#include "displays/model/display_renderer.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/channel_config.hpp"
 #include "visual/model/environment.hpp"
@@ -51,6 +60,9 @@ struct VisualSetup {
   bool time_of_day_set = true;       // false: the environment's own sun stays
   std::int64_t start_utc_ns = 0;     // snapshot requests issued before this are history
   std::string state_qos;             // profile of the aircraft-state reader ("" = catalogue)
+  std::unique_ptr<displays::DisplayRenderer> hud;  // the HUD drawn over the picture (null: none)
+  displays::DisplayContext hud_context;            // the magnetic variation its heading scale uses
+  std::string gl_note;                             // why --gl auto fell back to OSMesa ("" = it did not)
 };
 
 /// A snapshot tag is [A-Za-z0-9_-]{0,48} (it becomes part of a file name); the problem or nullopt.
@@ -82,7 +94,11 @@ class VisualComponent final : public runtime::Component {
   void publish_status(const runtime::FrameContext& frame, const RenderStats& stats, double state_age_s,
                       double step_ms);
 
+  void draw_hud(const msg::AircraftState& state, const EyePose& eye);
+
   runtime::Input<msg::AircraftState>& aircraft_state_;
+  runtime::Input<msg::AutopilotState>* autopilot_state_ = nullptr;    // with --hud
+  runtime::Input<msg::NavigationState>* navigation_state_ = nullptr;  // with --hud
   runtime::Output<msg::VisualChannelStatus>& visual_status_;
   runtime::Output<msg::VisualPicture>& visual_picture_;
   VisualSetup setup_;
@@ -101,6 +117,7 @@ class VisualComponent final : public runtime::Component {
   std::uint32_t rate_window_images_ = 0;
   float frame_rate_hz_ = 0.0f;
   Image scaled_;  // the picture reduced for the stream
+  Image hud_image_;
   msg::VisualChannelStatus status_;
   msg::VisualPicture picture_;
 };

@@ -36,7 +36,8 @@ std::string read_name(const ConfigNode& node) {
 }
 
 FederateSpec read_federate(const ConfigNode& node) {
-  node.reject_unknown_keys({"name", "binary", "args", "lockstep", "federate_options", "required"});
+  node.reject_unknown_keys({"name", "binary", "args", "lockstep", "federate_options", "required",
+                            "restart", "max_restarts"});
   FederateSpec spec;
   spec.name = read_name(node);
   spec.binary = node.string("binary");
@@ -44,6 +45,11 @@ FederateSpec read_federate(const ConfigNode& node) {
   spec.lockstep = node.boolean_or("lockstep", true);
   spec.federate_options = node.boolean_or("federate_options", true);
   spec.required = node.boolean_or("required", true);
+  spec.restart_on_failure = node.choice_or("restart", {"no", "on-failure"}, "no") == "on-failure";
+  if (node.has("max_restarts")) {
+    if (!spec.restart_on_failure) node.fail_at("max_restarts", "needs restart: on-failure");
+    spec.max_restarts = node.integer("max_restarts", 1, 100);
+  }
   if (spec.lockstep && !spec.federate_options) {
     node.fail_at("lockstep", "a lockstep federate needs the federate options (--name...)");
   }

@@ -11,6 +11,7 @@
 //   timing: {args: [--frames, "3000"]}
 //   federates:
 //     - {name: io, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/x.csv"]}
+//     - {name: flight, binary: fedsim-flight, restart: on-failure, max_restarts: 3}
 //     - {name: viewer, binary: fedsim, args: [topic, hz, fedsim/aircraft_state], lockstep: false,
 //        federate_options: false}
 //   after: [[gnuplot, "${OUT_DIR}/plot.gp"]]   # run once the federation stopped cleanly
@@ -20,6 +21,9 @@
 // Names (the deployment's and each federate's) are 1-32 characters of A-Z a-z 0-9 _ -: they
 // become file and folder names and the timing federate's comma-separated --expect list.
 // A key given twice, or a key that is a list or a map, is an error (file:line: field).
+// restart: no (the default) | on-failure: a federate that exits with an error or is killed by a
+// signal (other than the launcher's own stop) is started again with the same command line, at
+// most max_restarts times (default 3, 1..100) over the run; each restart is logged and counted.
 #pragma once
 
 #include <map>
@@ -35,6 +39,8 @@ struct FederateSpec {
   bool lockstep = true;            // acknowledges every frame: the timing federate waits for it
   bool federate_options = true;    // pass --name/--domain/--qos-file/--participant-profile
   bool required = true;            // the run fails if this one exits with an error
+  bool restart_on_failure = false; // restart: on-failure (else: no)
+  int max_restarts = 3;            // restarts allowed over the run with restart: on-failure
 };
 
 struct Deployment {

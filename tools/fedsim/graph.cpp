@@ -1,6 +1,7 @@
 #include "fedsim/graph.hpp"
 
 #include "common/runtime/federate_options.hpp"
+#include "common/runtime/topic_catalogue.hpp"
 #include "common/util/config_node.hpp"
 #include "fedsim/in_process.hpp"
 #include "fedsim/launcher.hpp"
@@ -155,7 +156,9 @@ void check(DataFlowGraph& graph, const QosProfiles& qos, bool lockstep) {
       }
     }
     if (use.readers.empty()) graph.notes.push_back(topic + " is written and read by nobody here");
-    if (use.writers.size() > 1) {
+    const runtime::TopicInfo* info = runtime::topics::find(topic);
+    const bool per_writer = info != nullptr && info->instance_per_writer;
+    if (use.writers.size() > 1 && !per_writer) {
       std::string names;
       for (const auto& [writer, port] : use.writers) names += (names.empty() ? "" : ", ") + writer->name;
       graph.problems.push_back(topic + " has " + std::to_string(use.writers.size()) +

@@ -8,6 +8,7 @@
 #include "flight/federate/flight_program.hpp"
 #include "io/io_component.hpp"
 #include "control_loading/control_loading_component.hpp"
+#include "displays/displays_component.hpp"
 #include "motion/motion_component.hpp"
 #include "nav/nav_component.hpp"
 #include "synthetic/synthetic_component.hpp"
@@ -34,6 +35,7 @@ const std::map<std::string, runtime::FederateProgram (*)()>& component_programs(
       {"fedsim-control-loading", &control_loading::program},
       {"fedsim-synthetic", &synthetic::program},
       {"fedsim-visual", &visual::program},
+      {"fedsim-displays", &displays::program},
       {"fedsim-scenario", &scenario::program},
   };
   return programs;

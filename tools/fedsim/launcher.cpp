@@ -8,6 +8,8 @@
 #include "common/util/monotonic_clock.hpp"
 #include "common/scenario/scenario.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -15,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -48,6 +51,10 @@ struct Child {
   bool sent_term = false;        // it was alive when we sent SIGTERM (its death by it is clean)
   bool group_signalled = false;  // its process group got our SIGTERM
   bool group_gone = false;       // no process of its group is left
+  bool restart_on_failure = false;  // deployment: restart: on-failure
+  int max_restarts = 0;
+  std::vector<std::string> crashes;  // how each restarted process ended, in order
+  std::string log_path;
 
   /// Exited, and nothing it started still writes to its output.
   bool finished() const { return exited && out_fd < 0; }
@@ -98,7 +105,7 @@ bool clean_exit(const Child& c) {
   return c.sent_term && WIFSIGNALED(c.status) && WTERMSIG(c.status) == SIGTERM;
 }
 
-void start_child(Child& child, const std::string& log_path) {
+void start_child(Child& child, const std::string& log_path, bool append_log = false) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
   const pid_t pid = fork();
@@ -124,7 +131,8 @@ void start_child(Child& child, const std::string& log_path) {
   close(fds[1]);
   child.pid = pid;
   child.out_fd = fds[0];
-  child.log.open(log_path);
+  child.log_path = log_path;
+  if (!child.log.is_open()) child.log.open(log_path, append_log ? std::ios::app : std::ios::trunc);
 }
 
 /// Signals every process of the child's group: SIGKILL to the direct child alone left a
@@ -191,6 +199,51 @@ void pump_output(Children& children, int timeout_ms, bool quiet) {
     if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) read_output(*owners[i], quiet);
   }
   std::cout.flush();
+}
+
+/// Reads what a dead child's processes left in its pipe, for at most ~1 s.
+void drain_output(Child& c, bool quiet) {
+  for (int i = 0; i < 20 && c.out_fd >= 0; ++i) {
+    pollfd fd{c.out_fd, POLLIN, 0};
+    if (poll(&fd, 1, 50) <= 0) continue;
+    read_output(c, quiet);
+  }
+  close_output(c, quiet);
+}
+
+/// restart: on-failure. A federate that crashed (an error exit, or a signal the launcher did not
+/// send) is started again with the same command line, at most max_restarts times over the run;
+/// what its process started goes with it (SIGKILL to its group). True if it was restarted.
+bool restart_crashed(Child& c, bool quiet) {
+  if (!c.restart_on_failure || clean_exit(c)) return false;
+  const std::string how = describe_exit(c.status);
+  if (static_cast<int>(c.crashes.size()) >= c.max_restarts) {
+    warn() << c.name << " crashed (" << how << ") and was restarted " << c.crashes.size()
+           << " time(s) already (max_restarts " << c.max_restarts << "): not restarting it\n";
+    return false;
+  }
+  c.crashes.push_back(how);
+  signal_group(c, SIGKILL);
+  drain_output(c, quiet);
+  const std::string line = c.name + " crashed (" + how + "): restarting it (restart " +
+                           std::to_string(c.crashes.size()) + " of at most " +
+                           std::to_string(c.max_restarts) + ")";
+  std::cout << "fedsim run: " << line << std::endl;
+  c.log << "---- fedsim run: " << line << " ----" << std::endl;
+  const int crashed_status = c.status;
+  c.exited = false;
+  c.status = 0;
+  c.sent_term = c.group_signalled = c.group_gone = false;
+  try {
+    start_child(c, c.log_path, true);
+  } catch (const std::exception& e) {  // no pipe or no fork: the crash stands, reported
+    warn() << c.name << ": restart failed: " << e.what() << "\n";
+    c.crashes.pop_back();
+    c.exited = true;
+    c.status = crashed_status;
+    return false;
+  }
+  return true;
 }
 
 void reap(Children& children) {
@@ -366,6 +419,33 @@ std::vector<std::string> never_ran(const Children& children, Progress& progress,
   return out;
 }
 
+/// The timing federate's losses and rejoins, from its summary; false if any federate was lost
+/// (a loss is a failure of the run, even when the federate came back).
+bool report_membership(const std::string& summary_path) {
+  std::ifstream in(summary_path);
+  if (!in) return true;  // the timing federate did not finish (its own exit says why)
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    warn() << "timing summary " << summary_path << " unreadable: " << e.what() << "\n";
+    return true;
+  }
+  const auto events = j.value("membership", nlohmann::json::array());
+  for (const auto& e : events) {
+    std::cout << "fedsim run: " << e.value("event", "?") << " " << e.value("federate", "?")
+              << " at frame " << e.value("frame", 0ull) << " (t=" << e.value("t_s", 0.0) << " s"
+              << (e.contains("why") ? ": " + e.value("why", "") : std::string()) << ")\n";
+  }
+  const auto still_lost = j.value("still_lost", std::vector<std::string>{});
+  if (!still_lost.empty()) {
+    std::string names;
+    for (const auto& n : still_lost) names += (names.empty() ? "" : ", ") + n;
+    std::cout << "fedsim run: lost and not back at the end: " << names << "\n";
+  }
+  return j.value("lost", std::vector<std::string>{}).empty();
+}
+
 std::string join(const std::vector<std::string>& words) {
   std::string out;
   for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -441,6 +521,7 @@ struct Plan {
   std::string bin_dir;
   std::string log_dir;
   runtime::ParticipantOptions dds;
+  std::string timing_summary;  // the timing federate's --summary-json
 };
 
 /// --name and the DDS settings every fedsim federate takes.
@@ -455,6 +536,8 @@ std::unique_ptr<Child> federate_child(const FederateSpec& f, const Plan& p) {
   child->name = f.name;
   child->required = f.required;
   child->lockstep = f.lockstep;
+  child->restart_on_failure = f.restart_on_failure;
+  child->max_restarts = f.max_restarts;
   child->argv.push_back(resolve_binary(f.binary, p.bin_dir));
   for (const auto& a : f.args) child->argv.push_back(substitute(a, p.vars));
   // After the user's args, so that a subcommand (`fedsim record ...`) comes first.
@@ -464,7 +547,7 @@ std::unique_ptr<Child> federate_child(const FederateSpec& f, const Plan& p) {
   return child;
 }
 
-std::unique_ptr<Child> timing_child(const Plan& p) {
+std::unique_ptr<Child> timing_child(Plan& p) {
   auto timing = std::make_unique<Child>();
   timing->name = "timing";
   timing->timing = true;
@@ -484,6 +567,15 @@ std::unique_ptr<Child> timing_child(const Plan& p) {
     timing->argv.push_back(expect);
   }
   for (const auto& a : p.d.timing_args) timing->argv.push_back(substitute(a, p.vars));
+  // Its summary (losses and rejoins) is read back for the run's own; unless the deployment
+  // names the file, it goes next to the logs.
+  const auto given = std::find(timing->argv.begin(), timing->argv.end(), "--summary-json");
+  if (given == timing->argv.end()) {
+    timing->argv.push_back("--summary-json");
+    timing->argv.push_back(p.timing_summary);
+  } else if (given + 1 != timing->argv.end()) {
+    p.timing_summary = *(given + 1);
+  }
   return timing;
 }
 
@@ -496,6 +588,7 @@ void plan_run(const RunOptions& options, Plan& p) {
   const std::string out_dir = options.out_dir.empty() ? "out/" + p.d.name : options.out_dir;
   p.log_dir = out_dir + "/logs";
   fs::create_directories(p.log_dir);
+  p.timing_summary = p.log_dir + "/timing_summary.json";
   p.vars = deployment_vars(options.deployment_path, out_dir);
   p.dds.name = "fedsim-run";
   p.dds.domain_id = domain;
@@ -506,6 +599,8 @@ void plan_run(const RunOptions& options, Plan& p) {
   }
   for (const auto& f : p.d.federates) p.children.push_back(federate_child(f, p));
   if (p.d.has_timing) p.children.push_back(timing_child(p));
+  std::error_code ec;
+  fs::remove(p.timing_summary, ec);  // a previous run's must not be read as this one's
 }
 
 void start_all(Plan& p) {
@@ -523,11 +618,13 @@ void start_all(Plan& p) {
 
 /// Before any stop: the timing federate's end stops the run; so does a required federate's
 /// failure.
-void check_exits(Children& children, Stopper& stopper, bool& failed) {
+void check_exits(Children& children, Stopper& stopper, bool& failed, bool quiet) {
   for (auto& c : children) {
     if (!c->exited || stopper.stopping()) continue;
     if (c->timing) {
       stopper.begin(std::string("timing federate finished (") + describe_exit(c->status) + ")");
+    } else if (restart_crashed(*c, quiet)) {
+      continue;
     } else if (c->required && !clean_exit(*c)) {
       failed = true;
       stopper.begin(c->name + " failed (" + describe_exit(c->status) + ")");
@@ -549,7 +646,7 @@ std::string supervise(Children& children, const RunOptions& options, Progress& p
     if (options.duration_s > 0 && now - start_ns >= options.duration_s * 1e9) {
       stopper.begin("duration reached");
     }
-    check_exits(children, stopper, failed);
+    check_exits(children, stopper, failed, options.quiet);
     stopper.step(failed);
     if (!stopper.stopping() && period_ns > 0 && now >= next_progress) {
       next_progress += period_ns;
@@ -640,8 +737,22 @@ int run_deployment(const RunOptions& options) {
     const bool ok = clean_exit(*c);
     if (!ok && c->required) failed = true;
     std::cout << "  " << (ok ? "ok    " : "FAILED") << " " << c->name << " (" << describe_exit(c->status)
-              << ")\n";
+              << ")";
+    if (!c->crashes.empty()) {
+      std::cout << "; CRASHED and restarted " << c->crashes.size() << " time(s) (max_restarts "
+                << c->max_restarts << "): " << join(c->crashes);
+    }
+    std::cout << "\n";
   }
+  std::vector<std::string> restarted;
+  for (const auto& c : p.children) {
+    if (!c->crashes.empty()) restarted.push_back(c->name + " x" + std::to_string(c->crashes.size()));
+  }
+  if (!restarted.empty()) {
+    std::cout << "fedsim run: restarted after a crash: " << join(restarted) << "\n";
+    failed = true;
+  }
+  if (!report_membership(p.timing_summary)) failed = true;
   if (const auto idle = never_ran(p.children, progress, p.d.mode == "lockstep"); !idle.empty()) {
     std::cout << "fedsim run: never ran: " << join(idle) << "\n";
     failed = true;

@@ -25,7 +25,10 @@ struct RunOptions {
 
 /// Runs the deployment; returns the process exit code: 0 = the federation ran (the timing
 /// federate ticked, every required federate reported RUNNING) and every federate stopped
-/// cleanly; 1 = a failure (named on the output); 2 = a bad deployment or option; 128 + the
+/// cleanly; 1 = a failure (named on the output), including a federate the timing federate
+/// reported lost (its summary's losses and rejoins are printed) and one restarted after a crash
+/// (restart: on-failure keeps the run going, but a crash is still a failure); 2 = a bad
+/// deployment or option; 128 + the
 /// signal (130 for Ctrl-C) when interrupted. Each federate runs in its own process group,
 /// which the stop signals reach whole.
 int run_deployment(const RunOptions& options);

@@ -1,14 +1,38 @@
 #include "tools/topic/dynamic_reader.hpp"
+#include "tools/topic/raw_type.hpp"
 
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastrtps/types/DynamicPubSubType.h>
 
 namespace fedsim::tools {
 
+namespace {
+
+/// Both the tools' DynamicPubSubType, or both their RawPubSubType (never a compiled one).
+bool same_tool_type_kind(const fdds::TopicDataType* a, const fdds::TopicDataType* b) {
+  using eprosima::fastrtps::types::DynamicPubSubType;
+  const bool both_dynamic = dynamic_cast<const DynamicPubSubType*>(a) != nullptr &&
+                            dynamic_cast<const DynamicPubSubType*>(b) != nullptr;
+  const bool both_raw = dynamic_cast<const RawPubSubType*>(a) != nullptr &&
+                        dynamic_cast<const RawPubSubType*>(b) != nullptr;
+  return both_dynamic || both_raw;
+}
+
+}  // namespace
+
 DynamicReader::DynamicReader(std::shared_ptr<runtime::DdsParticipant> dds, const std::string& topic,
                              fdds::TypeSupport type, const fdds::DataReaderQos& qos,
                              Handler handler)
     : dds_(std::move(dds)), topic_(topic), type_(type), handler_(std::move(handler)) {
+  // Two topics of one type (fedsim/pilot_controls and fedsim/applied_controls) read on one
+  // participant: the second reader shares the first one's type support when both are of the
+  // same kind (dynamic or raw: built alike from the type name), so its handler gets the
+  // objects it expects.
+  if (auto registered = dds_->participant()->find_type(type_.get_type_name());
+      registered.get() != nullptr && registered.get() != type_.get() &&
+      same_tool_type_kind(registered.get(), type_.get())) {
+    type_ = registered;
+  }
   auto* dds_topic = dds_->topic_for(topic, type_);
   // A participant keeps the first type support registered under a name: if compiled code got
   // there first, a reader here would deserialize into the wrong object.

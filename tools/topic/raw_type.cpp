@@ -36,8 +36,23 @@ void* RawPubSubType::createData() { return new RawSample(); }
 
 void RawPubSubType::deleteData(void* data) { delete static_cast<RawSample*>(data); }
 
-bool RawPubSubType::getKey(void*, eprosima::fastrtps::rtps::InstanceHandle_t*, bool) {
-  return false;
+bool RawPubSubType::getKey(void*, eprosima::fastrtps::rtps::InstanceHandle_t* handle, bool) {
+  // Fast DDS 2.9 asks for the key only of a keyed sample that came without a key hash (Cyclone
+  // DDS sends none by default). Returning false there is not survivable: DataReaderHistory then
+  // keeps the sample without an instance and asserts in update_instance_nts (abort). The key
+  // fields of an unknown type cannot be found in its bytes, so every such sample goes to one
+  // pseudo-instance: the raw tools count and size samples, they do not tell instances apart.
+  *handle = unknown_key_instance();
+  return true;
+}
+
+eprosima::fastrtps::rtps::InstanceHandle_t RawPubSubType::unknown_key_instance() {
+  eprosima::fastrtps::rtps::InstanceHandle_t handle;
+  // Not a valid MD5 of any serialized key in practice, and not the undefined (all-zero) handle.
+  static constexpr char kTag[] = "fedsim:raw:nokey";
+  static_assert(sizeof(kTag) - 1 == 16);
+  std::memcpy(handle.value, kTag, 16);
+  return handle;
 }
 
 }  // namespace fedsim::tools

@@ -25,9 +25,12 @@ class RawPubSubType : public eprosima::fastdds::dds::TopicDataType {
   std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
   void* createData() override;
   void deleteData(void* data) override;
-  /// The key of a raw sample cannot be computed: keyed writers send it with each sample.
+  /// The key of a raw sample cannot be computed: keyed writers usually send its hash with each
+  /// sample; for one that did not, this gives unknown_key_instance() (never fails: see .cpp).
   bool getKey(void* data, eprosima::fastrtps::rtps::InstanceHandle_t* handle,
               bool force_md5 = false) override;
+  /// The one instance every keyed sample without a key hash is filed under.
+  static eprosima::fastrtps::rtps::InstanceHandle_t unknown_key_instance();
 };
 
 }  // namespace fedsim::tools

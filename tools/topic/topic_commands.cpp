@@ -64,6 +64,35 @@ void add_hz(CLI::App& topic) {
   cmd->callback([options] { exit_with(run_topic_hz(*options, std::cout, std::cerr)); });
 }
 
+void add_bw(CLI::App& topic) {
+  auto options = std::make_shared<BwOptions>();
+  auto* cmd = topic.add_subcommand(
+      "bw", "print the bandwidth of a topic once a second: bytes/s, samples/s, sample sizes");
+  cmd->add_option("topic", options->topic, "topic name")->required();
+  cmd->add_option("-w,--window", options->window, "samples in the sliding window")
+      ->check(fedsim::util::FiniteRange(1, 100000000))
+      ->capture_default_str();
+  cmd->add_option("--wait", options->wait_s, "how long to wait for the topic to appear [s]")
+      ->check(fedsim::util::kFiniteNonNegative)
+      ->capture_default_str();
+  cmd->add_option("--duration", options->duration_s, "stop after this many seconds (0 = Ctrl-C)")
+      ->check(fedsim::util::kFiniteNonNegative);
+  runtime::add_dds_options(*cmd, options->dds);
+  cmd->callback([options] { exit_with(run_topic_bw(*options, std::cout, std::cerr)); });
+}
+
+void add_info(CLI::App& topic) {
+  auto options = std::make_shared<InfoOptions>();
+  auto* cmd = topic.add_subcommand(
+      "info", "show a topic's type and every writer's and reader's QoS, participant and locators");
+  cmd->add_option("topic", options->topic, "topic name")->required();
+  cmd->add_option("--wait", options->wait_s, "discovery time [s]")
+      ->check(fedsim::util::kFiniteNonNegative)
+      ->capture_default_str();
+  runtime::add_dds_options(*cmd, options->dds);
+  cmd->callback([options] { exit_with(run_topic_info(*options, std::cout, std::cerr)); });
+}
+
 void add_record(CLI::App& app) {
   auto options = std::make_shared<RecordOptions>();
   auto* cmd = app.add_subcommand("record", "record topics to CSV files, one per topic");
@@ -104,11 +133,13 @@ void add_record(CLI::App& app) {
 }  // namespace
 
 void add_topic_commands(CLI::App& app) {
-  auto* topic = app.add_subcommand("topic", "inspect live DDS topics: list, echo, hz");
+  auto* topic = app.add_subcommand("topic", "inspect live DDS topics: list, echo, hz, bw, info");
   topic->require_subcommand(1);
   add_list(*topic);
   add_echo(*topic);
   add_hz(*topic);
+  add_bw(*topic);
+  add_info(*topic);
   add_record(app);
   add_replay_command(app);
 }

@@ -6,6 +6,7 @@
 #include <fastdds/dds/domain/qos/DomainParticipantFactoryQos.hpp>
 #include <fastdds/dds/log/Log.hpp>
 
+#include <limits>
 #include <mutex>
 #include <regex>
 #include <sstream>
@@ -24,8 +25,43 @@ std::string to_text(const T& value) {
   return out.str();
 }
 
+double seconds_of(const eprosima::fastrtps::Duration_t& d) {
+  if (d == eprosima::fastrtps::c_TimeInfinite) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(d.seconds) + static_cast<double>(d.nanosec) * 1e-9;
+}
+
+std::string liveliness_name(fdds::LivelinessQosPolicyKind kind) {
+  switch (kind) {
+    case fdds::MANUAL_BY_PARTICIPANT_LIVELINESS_QOS: return "MANUAL_BY_PARTICIPANT";
+    case fdds::MANUAL_BY_TOPIC_LIVELINESS_QOS: return "MANUAL_BY_TOPIC";
+    default: return "AUTOMATIC";
+  }
+}
+
+std::string representation_name(fdds::DataRepresentationId_t id) {
+  switch (id) {
+    case fdds::XCDR_DATA_REPRESENTATION: return "XCDR";
+    case fdds::XCDR2_DATA_REPRESENTATION: return "XCDR2";
+    case fdds::XML_DATA_REPRESENTATION: return "XML";
+  }
+  return "unknown(" + std::to_string(static_cast<int>(id)) + ")";
+}
+
+void fill_locators(EndpointInfo& e, const rtps::RemoteLocatorList& locators) {
+  for (const auto& l : locators.unicast) e.unicast_locators.push_back(to_text(l));
+  for (const auto& l : locators.multicast) e.multicast_locators.push_back(to_text(l));
+}
+
 template <class Qos>
 void fill_qos(EndpointInfo& e, const Qos& qos) {
+  e.deadline_s = seconds_of(qos.m_deadline.period);
+  e.liveliness = liveliness_name(qos.m_liveliness.kind);
+  e.liveliness_lease_s = seconds_of(qos.m_liveliness.lease_duration);
+  e.by_source_timestamp =
+      qos.m_destinationOrder.kind == fdds::BY_SOURCE_TIMESTAMP_DESTINATIONORDER_QOS;
+  for (const auto id : qos.representation.m_value) {
+    e.representations.push_back(representation_name(id));
+  }
   e.reliable = qos.m_reliability.kind == fdds::RELIABLE_RELIABILITY_QOS;
   switch (qos.m_durability.kind) {
     case fdds::VOLATILE_DURABILITY_QOS: e.durability = 0; break;
@@ -121,6 +157,9 @@ void TopicMonitor::on_publisher_discovery(fdds::DomainParticipant*,
   e.keyed = data.topicKind() == rtps::WITH_KEY;
   e.max_serialized_size = data.typeMaxSerialized();
   fill_qos(e, data.m_qos);
+  e.ownership_strength = data.m_qos.m_ownershipStrength.value;
+  e.lifespan_s = seconds_of(data.m_qos.m_lifespan.duration);
+  fill_locators(e, data.remote_locators());
   if (data.has_type() && data.has_type_id() && data.type().m_type_object._d() != 0) {
     e.type_object = std::make_shared<eprosima::fastrtps::types::TypeObject>(
         data.type().m_type_object);
@@ -140,6 +179,7 @@ void TopicMonitor::on_subscriber_discovery(fdds::DomainParticipant*,
   e.writer = false;
   e.keyed = data.topicKind() == rtps::WITH_KEY;
   fill_qos(e, data.m_qos);
+  fill_locators(e, data.remote_locators());
   update(std::move(e), info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
 }
 

@@ -39,6 +39,17 @@ struct EndpointInfo {
   bool exclusive_ownership = false;
   std::vector<std::string> partitions;
   std::uint32_t max_serialized_size = 0;  // writers: as announced (0 if unknown)
+  // More of the QoS discovery announces (`fedsim topic info`); infinite periods are +inf.
+  // HISTORY is not part of RTPS discovery data: no tool can show a remote endpoint's history.
+  double deadline_s = 0.0;
+  std::string liveliness = "AUTOMATIC";  // AUTOMATIC | MANUAL_BY_PARTICIPANT | MANUAL_BY_TOPIC
+  double liveliness_lease_s = 0.0;
+  std::uint32_t ownership_strength = 0;  // writers
+  double lifespan_s = 0.0;               // writers
+  bool by_source_timestamp = false;      // DESTINATION_ORDER
+  std::vector<std::string> representations;  // XCDR / XCDR2 / XML (empty = not announced)
+  std::vector<std::string> unicast_locators;    // "UDPv4:[127.0.0.1]:7411"
+  std::vector<std::string> multicast_locators;
   // The TypeObject a writer sent in discovery (only writers configured to send one).
   std::shared_ptr<eprosima::fastrtps::types::TypeObject> type_object;
   std::shared_ptr<eprosima::fastrtps::types::TypeIdentifier> type_identifier;

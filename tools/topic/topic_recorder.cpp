@@ -1,24 +1,46 @@
 #include "tools/topic/topic_recorder.hpp"
 
 #include <fastrtps/types/DynamicData.h>
+#include <fastrtps/types/DynamicType.h>
 
 #include <chrono>
+#include <cstdlib>
 
 namespace fedsim::tools {
+
+namespace {
+/// The time cell (first column) of a recorded line as simulation time; nullopt when unreadable.
+std::optional<double> leading_number(const std::string& line) {
+  char* end = nullptr;
+  const double t = std::strtod(line.c_str(), &end);
+  if (end == line.c_str() || (*end != ',' && *end != '\n')) return std::nullopt;
+  return t;
+}
+}  // namespace
+
+std::optional<double> TopicRecorder::row_sim_time(const std::string& line) const {
+  return layout_.has_sim_time() ? leading_number(line) : std::nullopt;
+}
 
 TopicRecorder::TopicRecorder(const std::string& topic, ftypes::DynamicType_ptr type,
                              const std::filesystem::path& file)
     : topic_(topic), type_(std::move(type)), layout_(type_), path_(file) {
   file_.open(path_, std::ios::out | std::ios::trunc);
   if (!file_) throw std::runtime_error("cannot write " + path_.string());
-  file_ << layout_.header() << '\n';
-  file_.flush();
+  const std::string header = layout_.header() + '\n';
+  file_ << header;
+  header_bytes_ = bytes_ = header.size();
+  flush();
 }
 
 TopicRecorder::~TopicRecorder() {
-  close();
-  drain();
-  flush();
+  try {
+    close();
+    drain();
+    flush();
+  } catch (const std::exception&) {
+    // Nothing more can be done while destroying; flush() reports errors when called directly.
+  }
 }
 
 void TopicRecorder::subscribe(std::shared_ptr<runtime::DdsParticipant> dds,
@@ -63,7 +85,11 @@ std::size_t TopicRecorder::drain() {
     lines.swap(queue_);
   }
   if (lines.empty()) return 0;
-  for (const auto& line : lines) file_ << line;
+  for (const auto& line : lines) {
+    index_.add_row(row_sim_time(line), bytes_);
+    file_ << line;
+    bytes_ += line.size();
+  }
   written_.fetch_add(lines.size());
   return lines.size();
 }
@@ -71,6 +97,13 @@ std::size_t TopicRecorder::drain() {
 void TopicRecorder::flush() {
   std::lock_guard lock(file_mutex_);
   file_.flush();
+  // Written whole each time (small: one seek entry a second), so a recording cut short by a
+  // crash still has an index that matches its flushed rows.
+  const auto index_path = index_file_for(path_);
+  std::ofstream index(index_path, std::ios::out | std::ios::trunc);
+  index << index_.to_json(topic_, type_->get_name(), path_.filename().string(), header_bytes_,
+                          layout_.columns());
+  if (!index) throw std::runtime_error("cannot write " + index_path.string());
 }
 
 }  // namespace fedsim::tools

@@ -1,11 +1,13 @@
 // Records one topic to one CSV file: the reader's listener turns each sample into a CSV line and
 // queues it (on_sample); drain() writes the queue to the file (from the recorder's loop, or from
 // the federate's step in a lockstep run, so a frame is acknowledged only once its samples are
-// written). close() then drain() at stop loses nothing that was received.
+// written). close() then drain() at stop loses nothing that was received. flush() also rewrites
+// the file's index (`<stem>.index.json`, recording_index.hpp): rows, time span, seek table.
 #pragma once
 
 #include "tools/topic/csv_layout.hpp"
 #include "tools/topic/dynamic_reader.hpp"
+#include "tools/topic/recording_index.hpp"
 
 #include <atomic>
 #include <filesystem>
@@ -37,6 +39,7 @@ class TopicRecorder {
   std::optional<std::uint64_t> on_sample(ftypes::DynamicData& sample, double receive_time_s);
   /// Writes every queued line; returns how many.
   std::size_t drain();
+  /// Flushes the file and writes its index.
   void flush();
 
   const std::string& topic() const { return topic_; }
@@ -50,12 +53,17 @@ class TopicRecorder {
   }
 
  private:
+  std::optional<double> row_sim_time(const std::string& line) const;
+
   std::string topic_;
   ftypes::DynamicType_ptr type_;
   CsvLayout layout_;
   std::filesystem::path path_;
   std::mutex file_mutex_;
   std::ofstream file_;
+  std::uint64_t header_bytes_ = 0;
+  std::uint64_t bytes_ = 0;  // written so far, header included: the next line's offset
+  RecordingIndex index_;
   std::mutex queue_mutex_;
   std::vector<std::string> queue_;
   std::atomic<std::uint64_t> written_{0};

@@ -1,5 +1,7 @@
 #include "tools/topic/topic_replay.hpp"
 
+#include "tools/topic/recording_index.hpp"
+
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/shutdown.hpp"
 #include "common/util/cli_checks.hpp"
@@ -536,11 +538,23 @@ class RecordReader {
   explicit RecordReader(const std::filesystem::path& file) : file_(file), in_(file) {
     if (!in_) throw ReplayError(file.string() + ": cannot open");
   }
+  /// Goes on reading at the record starting `offset` bytes into the file, row `row` (0 = the
+  /// first after the header), as the file's index says; throws if no line starts there.
+  void skip_to(std::uint64_t offset, std::uint64_t row) {
+    char before = 0;
+    in_.seekg(static_cast<std::streamoff>(offset) - 1);
+    if (!in_.get(before) || before != '\n') {
+      throw ReplayError(file_.string() + ": its index does not match it (no line starts at byte " +
+                        std::to_string(offset) + "); remove " + index_file_for(file_).string());
+    }
+    line_ = static_cast<int>(row) + 1;  // the header is line 1
+  }
   /// The next record and the line it starts on; false at the end of the file.
   bool next(std::vector<std::string>& fields, int& first_line) {
     std::string line;
     while (std::getline(in_, line)) {
       ++line_;
+      unterminated_ = in_.eof();  // the file ends without a line break here
       if (!line.empty() && line.back() == '\r') line.pop_back();
       if (line.empty()) continue;
       first_line = line_;
@@ -556,6 +570,8 @@ class RecordReader {
     }
     return false;
   }
+  /// True if the last record read ends the file without a line break (a line being written).
+  bool unterminated() const { return unterminated_; }
   /// Splits a whole record; false if a quoted field is still open at its end.
   static bool split(const std::string& text, std::vector<std::string>& fields) {
     fields.assign(1, std::string());
@@ -580,6 +596,7 @@ class RecordReader {
   std::filesystem::path file_;
   std::ifstream in_;
   int line_ = 0;
+  bool unterminated_ = false;
 };
 
 /// A header that differs from this build's layout was written by another fedsim version: its
@@ -660,7 +677,7 @@ std::vector<std::string> split_recorded_row(const std::string& line) {
 // ---- Recording ---------------------------------------------------------------------------------
 
 RecordedTopic Recording::load_topic(const runtime::TopicInfo& topic,
-                                    const std::filesystem::path& file) {
+                                    const std::filesystem::path& file, double from_s) {
   const DynamicType_ptr type = dynamic_type_by_name(topic.type_name);
   if (!type) throw ReplayError("no type object for " + topic.type_name + " in this build");
   RecordedTopic out;
@@ -673,9 +690,20 @@ RecordedTopic Recording::load_topic(const runtime::TopicInfo& topic,
   int line = 0;
   if (!reader.next(have, line)) throw ReplayError(file.string() + ": empty (no header line)");
   check_header(file, topic, have, layout.columns());
+  // A later start skips the rows its index says are earlier, unread (an hour-long recording
+  // replayed from minute 50 parses ten minutes).
+  if (from_s > 0.0) {
+    if (const auto index = RecordingIndex::read(index_file_for(file))) {
+      if (const auto start = index->start_for(from_s)) reader.skip_to(start->byte_offset, start->row);
+    }
+  }
+  // A recorder's file (it has an index) may be read while it is being written: its last line
+  // can be half there. That line is left for the next read, not refused.
+  const bool recorder_file = std::filesystem::exists(index_file_for(file));
   std::map<std::string, std::uint32_t> instances;
   RecordedRow r;
   while (reader.next(r.cells, r.line)) {
+    if (recorder_file && reader.unterminated()) break;
     try {
       out.decoder->validate(r.cells);
       if (!read_number(std::string_view(r.cells[0]), r.time_s) || !std::isfinite(r.time_s)) {
@@ -694,7 +722,8 @@ RecordedTopic Recording::load_topic(const runtime::TopicInfo& topic,
   return out;
 }
 
-Recording Recording::load(const std::filesystem::path& dir, const std::vector<std::string>& topics) {
+Recording Recording::load(const std::filesystem::path& dir, const std::vector<std::string>& topics,
+                          double from_s) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
     throw RecordingNotFound("no recording folder '" + dir.string() + "'");
@@ -725,7 +754,7 @@ Recording Recording::load(const std::filesystem::path& dir, const std::vector<st
                                  "time to replay it by");
       continue;
     }
-    recording.topics_.push_back(load_topic(*info, file));
+    recording.topics_.push_back(load_topic(*info, file, from_s));
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
@@ -1089,7 +1118,9 @@ std::string replay_until_done(Replayer& replayer, const ReplayCliOptions& option
 int run_replay(const ReplayCliOptions& options, std::ostream& out, std::ostream& err) {
   std::optional<Recording> recording;
   try {
-    recording = Recording::load(options.dir, trimmed_topics(options.topics));
+    // --loop comes back to the start of the recording: it needs every row; otherwise the rows
+    // well before --from-s are left unread.
+    recording = Recording::load(options.dir, trimmed_topics(options.topics), options.loop ? 0.0 : options.from_s);
   } catch (const RecordingNotFound& e) {
     err << "fedsim replay: " << e.what() << "\n";
     return 2;

@@ -117,11 +117,13 @@ class Recording {
  public:
   /// Loads every replayable topic of `dir` (only those in `topics` if it is not empty: each must
   /// then have its file). Throws RecordingNotFound or ReplayError.
+  /// With `from_s` > 0, rows the files' indexes (recording_index.hpp) place more than a seek
+  /// interval before it are not read (a seek earlier than `from_s` then finds none of them).
   static Recording load(const std::filesystem::path& dir,
-                        const std::vector<std::string>& topics = {});
-  /// Loads one topic's file, checking its header and every row.
+                        const std::vector<std::string>& topics = {}, double from_s = 0.0);
+  /// Loads one topic's file, checking its header and every row (from `from_s` as above).
   static RecordedTopic load_topic(const runtime::TopicInfo& topic,
-                                  const std::filesystem::path& file);
+                                  const std::filesystem::path& file, double from_s = 0.0);
 
   const std::filesystem::path& dir() const { return dir_; }
   const std::vector<RecordedTopic>& topics() const { return topics_; }

@@ -4,6 +4,8 @@
 //   fedsim topic list [-v] [--wait S]
 //   fedsim topic echo <topic> [--count N] [--field a.b] [--json] [--wait S] [--timeout S]
 //   fedsim topic hz <topic> [--window N] [--wait S] [--duration S]
+//   fedsim topic bw <topic> [--window N] [--wait S] [--duration S]
+//   fedsim topic info <topic> [--wait S]
 //   fedsim record --topics t1,t2 --out DIR [--duration S] [--lockstep-member] [--name recorder]
 //
 // All take the common DDS options (--domain, --qos-file, --participant-profile): the default
@@ -44,6 +46,21 @@ struct HzOptions {
   double report_period_s = 1.0;
 };
 
+struct BwOptions {
+  runtime::ParticipantOptions dds;
+  std::string topic;
+  std::size_t window = 100;    // samples in the sliding window (ros2 topic bw's default)
+  double wait_s = 3.0;
+  double duration_s = 0.0;     // stop after this many seconds (0 = until Ctrl-C)
+  double report_period_s = 1.0;
+};
+
+struct InfoOptions {
+  runtime::ParticipantOptions dds;
+  std::string topic;
+  double wait_s = 1.5;  // discovery time: every endpoint seen in it is shown
+};
+
 struct RecordOptions {
   runtime::ParticipantOptions dds;
   std::vector<std::string> topics;
@@ -64,6 +81,8 @@ struct RecordOptions {
 int run_topic_list(const ListOptions& options, std::ostream& out, std::ostream& err);
 int run_topic_echo(const EchoOptions& options, std::ostream& out, std::ostream& err);
 int run_topic_hz(const HzOptions& options, std::ostream& out, std::ostream& err);
+int run_topic_bw(const BwOptions& options, std::ostream& out, std::ostream& err);
+int run_topic_info(const InfoOptions& options, std::ostream& out, std::ostream& err);
 int run_record(const RecordOptions& options, std::ostream& out, std::ostream& err);
 
 /// "fedsim/aircraft_state" -> "fedsim_aircraft_state.csv"

@@ -41,11 +41,11 @@ TEST(QosProfiles, EveryProfileCreatesWriterAndReader) {
       EXPECT_NO_THROW(Subscription<msg::FederateStatus>(dds, topic, reliable));
     }
   }
-  EXPECT_EQ(qos::all().size(), 7u);
+  EXPECT_EQ(qos::all().size(), 8u);
 }
 
 TEST(TopicCatalogue, EveryTopicHasItsIdlNameTypeAndAKnownProfile) {
-  ASSERT_EQ(topics::all().size(), 14u);
+  ASSERT_EQ(topics::all().size(), 15u);
   for (const TopicInfo* t : topics::all()) {
     SCOPED_TRACE(t->name);
     EXPECT_EQ(t->name.rfind("fedsim/", 0), 0u);
@@ -82,6 +82,38 @@ TEST(QosProfiles, ProfilesCarryTheDocumentedPolicies) {
   EXPECT_EQ(command.writer()->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
   EXPECT_EQ(command.writer()->get_qos().durability().kind, TRANSIENT_LOCAL_DURABILITY_QOS);
   EXPECT_EQ(done.writer()->get_qos().liveliness().kind, AUTOMATIC_LIVELINESS_QOS);
+  // Pilot controls: one owner per aircraft (exclusive ownership; fedsim-io's strength is 10).
+  Publisher<msg::PilotControls> controls(dds, test_topic<msg::PilotControls>("qos_test/controls"),
+                                         qos::kPilotControls);
+  Subscription<msg::PilotControls> controls_reader(dds, test_topic<msg::PilotControls>("qos_test/controls"),
+                                                   qos::kPilotControls);
+  EXPECT_EQ(controls.writer()->get_qos().ownership().kind, EXCLUSIVE_OWNERSHIP_QOS);
+  EXPECT_EQ(controls.writer()->get_qos().ownership_strength().value, 10u);
+  EXPECT_EQ(controls.writer()->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
+  EXPECT_EQ(controls.writer()->get_qos().durability().kind, TRANSIENT_LOCAL_DURABILITY_QOS);
+  EXPECT_EQ(controls.writer()->get_qos().history().depth, 2);
+  EXPECT_EQ(state.writer()->get_qos().ownership().kind, SHARED_OWNERSHIP_QOS);  // negative control
+}
+
+// A best-effort writer and a reliable reader never match: both runtime endpoints see the
+// incompatible remote (each logs it with topic and policy: qos_mismatch.hpp) and count it. A
+// compatible pair counts nothing (negative control).
+TEST(QosProfiles, AnIncompatibleRemoteIsCountedOnBothSides) {
+  auto dds = DdsParticipant::create(options_on(229, "qos-mismatch-test"));
+  const auto topic = test_topic<msg::FederateStatus>("qos_test/mismatch");
+  Publisher<msg::FederateStatus> best_effort(dds, topic, qos::kState);
+  Subscription<msg::FederateStatus> reliable(dds, topic, qos::kCommand);
+  Subscription<msg::FederateStatus> matching(dds, topic, qos::kState);
+  for (int i = 0; i < 250 && (best_effort.incompatible_readers() == 0 || reliable.incompatible_writers() == 0 ||
+                              matching.matched_writers() == 0);
+       ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_EQ(best_effort.incompatible_readers(), 1u);
+  EXPECT_EQ(reliable.incompatible_writers(), 1u);
+  EXPECT_EQ(matching.matched_writers(), 1);
+  EXPECT_EQ(matching.incompatible_writers(), 0u);
+  EXPECT_STREQ(qos_policy_name(eprosima::fastdds::dds::RELIABILITY_QOS_POLICY_ID), "RELIABILITY");
 }
 
 TEST(QosProfiles, UnknownProfileAndMissingFileGiveClearErrors) {

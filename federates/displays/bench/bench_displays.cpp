@@ -11,6 +11,8 @@
 // hud_over_ksfo.png: the HUD composited over the image generator's picture of KSFO from the
 // same eye (visual_model, the same ChannelConfig), its flight-path vector on the aiming point.
 // The last line is one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU).
+#include "visual/model/egl_context.hpp"
+#include "visual/model/timing_summary.hpp"
 #include "common/units/units.hpp"
 #include "displays/model/composite.hpp"
 #include "displays/model/display_renderer.hpp"
@@ -48,18 +50,9 @@ constexpr double kVariationRad = 13.0 * kDegToRad;  // KSFO, east (the ILS 28R c
 constexpr double kPathRad = 3.0 * kDegToRad;
 constexpr double kAimingPointM = 400.0;  // beyond the threshold (visual_model's scene)
 
-struct Stats {
-  double median_ms = 0.0, p99_ms = 0.0, max_ms = 0.0;
-};
-
-Stats stats_of(std::vector<double> ms) {
-  std::sort(ms.begin(), ms.end());
-  Stats s;
-  s.median_ms = ms[ms.size() / 2];
-  s.p99_ms = ms[std::min(ms.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * ms.size())) - 1)];
-  s.max_ms = ms.back();
-  return s;
-}
+// One summary for both benchmarks (visual/model/timing_summary.hpp).
+using Stats = fedsim::visual::TimingSummary;
+Stats stats_of(std::vector<double> ms) { return fedsim::visual::summarize_ms(std::move(ms)); }
 
 nlohmann::json to_json(const Stats& s) {
   return {{"median_ms", s.median_ms}, {"p99_ms", s.p99_ms}, {"max_ms", s.max_ms}};
@@ -247,6 +240,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 150.0));
   app.add_option("--samples", samples, "multisampling 1, 2 or 4")->check(CLI::IsMember({1, 2, 4}));
   app.add_option("--png", png_dir, "write pfd.png, nd.png, hud.png, hud_over_ksfo.png here");
+  std::string gl = "osmesa";
+  app.add_option("--gl", gl, "OpenGL context: osmesa, egl (a GPU's device, else Mesa surfaceless), auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}))->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -259,8 +255,10 @@ int main(int argc, char** argv) {
     const double runway_heading = std::find_if(ends.begin(), ends.end(), [](const auto& e) {
                                     return e.runway == "28R";
                                   })->heading_true_rad;
-    DisplayRenderer renderer(std::make_unique<fedsim::visual::OsMesaContext>(),
+    std::string fallback;
+    DisplayRenderer renderer(fedsim::visual::make_gl_context(*fedsim::visual::parse_gl_backend(gl), &fallback),
                              default_font_paths(), samples);
+    if (!fallback.empty()) std::printf("--gl auto: %s\n", fallback.c_str());
     renderer.set_clock([] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
           .count();

@@ -28,36 +28,6 @@ std::string describe(const TrimResult& trim) {
 
 }  // namespace
 
-std::optional<std::string> check_pilot_controls(const msg::PilotControls& in) {
-  std::optional<std::string> problem;
-  auto check = [&](const char* name, double value, double low, double high) {
-    if (problem) return;
-    if (!std::isfinite(value)) {
-      problem = std::string(name) + " is not finite";
-    } else if (value < low || value > high) {
-      problem = std::string(name) + " = " + std::to_string(value) + " is outside [" +
-                std::to_string(low) + ", " + std::to_string(high) + "]";
-    }
-  };
-  check("elevator", in.elevator(), -1.0, 1.0);
-  check("aileron", in.aileron(), -1.0, 1.0);
-  check("rudder", in.rudder(), -1.0, 1.0);
-  check("elevator_trim", in.elevator_trim(), -1.0, 1.0);
-  check("aileron_trim", in.aileron_trim(), -1.0, 1.0);
-  check("rudder_trim", in.rudder_trim(), -1.0, 1.0);
-  for (std::size_t e = 0; e < in.throttle().size(); ++e) {
-    check("throttle", in.throttle()[e], 0.0, 1.0);
-    check("mixture", in.mixture()[e], 0.0, 1.0);
-    check("propeller", in.propeller()[e], 0.0, 1.0);
-  }
-  check("flaps", in.flaps(), 0.0, 1.0);
-  check("speedbrake", in.speedbrake(), 0.0, 1.0);
-  check("brake_left", in.brake_left(), 0.0, 1.0);
-  check("brake_right", in.brake_right(), 0.0, 1.0);
-  check("nosewheel_steering", in.nosewheel_steering(), -1.0, 1.0);
-  return problem;
-}
-
 AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,
                                        const AircraftControls& trimmed) {
   AircraftControls c = trimmed;
@@ -85,6 +55,33 @@ AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMod
   c.brake_right = in.brake_right();
   c.steering = in.nosewheel_steering();
   return c.clamped();
+}
+
+void fill_applied_controls(const AircraftControls& flown, const msg::PilotControls* source,
+                           msg::PilotControls& out) {
+  if (source != nullptr) {
+    out.discretes(source->discretes());
+    out.pilot_force_n(source->pilot_force_n());
+    out.radios(source->radios());
+    out.mcp(source->mcp());
+  }
+  out.elevator(static_cast<float>(flown.elevator));
+  out.aileron(static_cast<float>(flown.aileron));
+  out.rudder(static_cast<float>(flown.rudder));
+  out.elevator_trim(static_cast<float>(flown.elevator_trim));
+  out.aileron_trim(static_cast<float>(flown.aileron_trim));
+  out.rudder_trim(static_cast<float>(flown.rudder_trim));
+  for (std::size_t e = 0; e < out.throttle().size(); ++e) {
+    out.throttle()[e] = static_cast<float>(flown.throttle[e]);
+    out.mixture()[e] = static_cast<float>(flown.mixture[e]);
+    out.propeller()[e] = static_cast<float>(flown.propeller[e]);
+  }
+  out.flaps(static_cast<float>(flown.flaps));
+  out.speedbrake(static_cast<float>(flown.speedbrake));
+  out.gear_down(flown.gear_down);
+  out.brake_left(static_cast<float>(flown.brake_left));
+  out.brake_right(static_cast<float>(flown.brake_right));
+  out.nosewheel_steering(static_cast<float>(flown.steering));
 }
 
 void fill_aircraft_state(const AircraftOutputs& out, const AircraftControls& flown,

@@ -21,13 +21,17 @@ namespace fedsim::flight {
 ///              (flaps, gear, brakes, steering, mixture, propeller, trims) are absolute.
 enum class ControlsMode { kAbsolute, kRelative };
 
-/// Why a pilot-controls sample cannot be flown (a non-finite value, or one outside its range:
-/// primaries, trims and steering -1..1, levers, flaps and brakes 0..1), or nullopt if it can.
-std::optional<std::string> check_pilot_controls(const msg::PilotControls& in);
+// Whether a pilot-controls sample may be flown: pilot_input_gate.hpp.
 
 /// Pilot controls as the model takes them (clamped by the model).
 AircraftControls controls_from_message(const msg::PilotControls& in, ControlsMode mode,
                                        const AircraftControls& trimmed);
+
+/// Fills a fedsim/applied_controls sample: the controls the model flies (`flown`, after
+/// relative-mode trim and the autopilot), with the discretes, radios and MCP of the input they
+/// came from (`source`, nullptr before a first good input: zeros). The stamp is the caller's.
+void fill_applied_controls(const AircraftControls& flown, const msg::PilotControls* source,
+                           msg::PilotControls& out);
 
 /// Fills an AircraftState sample from the model's outputs and the controls it flew (no
 /// allocation). Every field of the message is set (tested).

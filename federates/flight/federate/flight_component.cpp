@@ -1,16 +1,23 @@
 #include "flight/federate/flight_component.hpp"
 
+#include <algorithm>
+
 namespace fedsim::flight {
 
 FlightComponent::FlightComponent(std::string name, FlightSetup setup, std::string_view state_qos)
     : Component(std::move(name)),
       pilot_controls_(reads(runtime::topics::pilot_controls)),
+      applied_controls_(writes(runtime::topics::applied_controls, state_qos)),
       aircraft_state_(writes(runtime::topics::aircraft_state, state_qos)),
       engine_state_(writes(runtime::topics::engine_state)),
       replay_state_(monitors(runtime::topics::replay_state)),
       setup_(std::move(setup)),
-      trim_base_(setup_.start.controls) {
+      trim_base_(setup_.start.controls),
+      gate_(PilotInputLimits{setup_.aircraft_id}),
+      screen_(PilotInputLimits{setup_.aircraft_id}) {
+  pilot_controls_.accept_only([this](const msg::PilotControls& s) { return screen_.accept(s); });
   state_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
+  applied_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
   engine_.aircraft_id(static_cast<uint16_t>(setup_.aircraft_id));
   if (setup_.autopilot) {
     setup_.autopilot->validate();
@@ -53,12 +60,17 @@ bool FlightComponent::apply_autopilot_failure(const msg::SimCommand& command) {
   return true;
 }
 
-void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
+void FlightComponent::take_pilot_controls(const runtime::FrameContext& frame) {
+  screen_.frame_started(frame.frame);
+  report_screened_controls(frame);
+  watch_controls_writers(frame);
   const msg::PilotControls* pilot = pilot_controls_.latest();
+  bool accepted = false;
   if (pilot && pilot_controls_.updates() != controls_seen_) {
     controls_seen_ = pilot_controls_.updates();
-    const bool invalid = (pilot->discretes() & msg::DISCRETE_INPUTS_INVALID) != 0;
-    if (invalid != pilot_inputs_invalid_) {
+    const bool ours = pilot->aircraft_id() == setup_.aircraft_id;
+    const bool invalid = ours && (pilot->discretes() & msg::DISCRETE_INPUTS_INVALID) != 0;
+    if (ours && invalid != pilot_inputs_invalid_) {
       pilot_inputs_invalid_ = invalid;
       if (invalid) {
         report_fault("pilot_inputs_invalid", "frame " + std::to_string(frame.frame) +
@@ -70,21 +82,77 @@ void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
       }
     }
     if (invalid) {
-      // Held: the last valid controls stay (below).
-    } else if (const auto problem = check_pilot_controls(*pilot)) {
-      report_fault("input_rejected", "frame " + std::to_string(frame.frame) +
-                                         ": pilot_controls of frame " +
-                                         std::to_string(pilot->stamp().frame()) + " " +
-                                         *problem + " (kept the previous controls)");
+      accepted = true;  // the writer is alive: the device is what is lost (reported above)
+    } else if (const auto problem = gate_.offer(*pilot, frame.frame)) {
+      report_fault(fault_kind(problem->kind), "frame " + std::to_string(frame.frame) +
+                                                  ": pilot_controls of frame " +
+                                                  std::to_string(pilot->stamp().frame()) + " refused: " +
+                                                  problem->message + " (kept the last good input)");
     } else {
-      last_valid_controls_ = *pilot;
-      have_valid_controls_ = true;
+      accepted = true;
+      controls_accepted_ = controls_seen_;
     }
   }
-  // Every frame: relative controls follow the trim base, which a reposition moves.
-  if (have_valid_controls_) {
-    setup_.model->set_controls(
-        controls_from_message(last_valid_controls_, setup_.controls_mode, trim_base_));
+  switch (gate_.frame(frame.frame, accepted)) {
+    case PilotInputGate::HoldEvent::kHoldStarted:
+      log().warn("frame {}: no good pilot_controls sample for {} frames: flying the last good input, held",
+                 frame.frame, gate_.quiet_frames());
+      break;
+    case PilotInputGate::HoldEvent::kHoldEnded:
+      log().info("frame {}: pilot_controls flowing again ({} held frames so far)", frame.frame,
+                 gate_.held_frames());
+      break;
+    case PilotInputGate::HoldEvent::kNone:
+      break;
+  }
+}
+
+void FlightComponent::report_screened_controls(const runtime::FrameContext& frame) {
+  constexpr std::uint64_t kMostPerFrame = 1000;  // a flood is counted, not logged sample by sample
+  const std::uint64_t other = screen_.other_aircraft();
+  if (other != screened_other_) {
+    const std::string message = "frame " + std::to_string(frame.frame) + ": pilot_controls for aircraft_id " +
+                                std::to_string(screen_.last_other_aircraft_id()) + " ignored (this is aircraft " +
+                                std::to_string(setup_.aircraft_id) + ")";
+    for (std::uint64_t i = 0; i < std::min(other - screened_other_, kMostPerFrame); ++i) {
+      report_fault(fault_kind(InputRejection::kOtherAircraft), message);
+    }
+    screened_other_ = other;
+  }
+  const std::uint64_t future = screen_.future_stamps();
+  if (future != screened_future_) {
+    const std::string message = "frame " + std::to_string(frame.frame) + ": pilot_controls stamped frame " +
+                                std::to_string(screen_.last_future_stamp()) + " refused (more than " +
+                                std::to_string(gate_.limits().max_stamp_age_frames) + " frames ahead)";
+    for (std::uint64_t i = 0; i < std::min(future - screened_future_, kMostPerFrame); ++i) {
+      report_fault(fault_kind(InputRejection::kBadStamp), message);
+    }
+    screened_future_ = future;
+  }
+}
+
+void FlightComponent::watch_controls_writers(const runtime::FrameContext& frame) {
+  const int writers = pilot_controls_.writers();
+  switch (gate_.writers_matched(writers)) {
+    case PilotInputGate::WriterEvent::kSecondWriter:
+      // A warning, not a fault: a trainer taking the aircraft over (a stronger writer) is a
+      // legitimate use; the count is in the stop summary.
+      log().warn("frame {}: controls_second_writer: fedsim/pilot_controls has {} writers: only the "
+                 "strongest (exclusive ownership) flies aircraft {}, the others are ignored",
+                 frame.frame, writers, setup_.aircraft_id);
+      break;
+    case PilotInputGate::WriterEvent::kSingleWriterAgain:
+      log().info("frame {}: fedsim/pilot_controls has one writer again", frame.frame);
+      break;
+    case PilotInputGate::WriterEvent::kNone:
+      break;
+  }
+}
+
+void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
+  // Every RUN frame: relative controls follow the trim base, which a reposition moves.
+  if (const msg::PilotControls* good = gate_.last_good()) {
+    setup_.model->set_controls(controls_from_message(*good, setup_.controls_mode, trim_base_));
     apply_wing_leveller_switch(frame);
   }
 }
@@ -92,7 +160,7 @@ void FlightComponent::apply_pilot_controls(const runtime::FrameContext& frame) {
 void FlightComponent::apply_wing_leveller_switch(const runtime::FrameContext& frame) {
   AircraftModel& model = *setup_.model;
   if (!model.pack().flight_controls.wing_leveller) return;
-  const bool on = (last_valid_controls_.discretes() & msg::DISCRETE_WING_LEVELLER) != 0;
+  const bool on = (gate_.last_good()->discretes() & msg::DISCRETE_WING_LEVELLER) != 0;
   if (on == model.wing_leveller_engaged()) return;
   model.set_wing_leveller_engaged(on);
   log().info("frame {}: wing leveller {}", frame.frame, on ? "engaged" : "disengaged");
@@ -102,6 +170,7 @@ void FlightComponent::take_mcp(const runtime::FrameContext& frame) {
   const msg::PilotControls* sample = pilot_controls_.latest();
   if (sample == nullptr || pilot_controls_.updates() == mcp_seen_) return;
   mcp_seen_ = pilot_controls_.updates();
+  if (controls_accepted_ != mcp_seen_) return;  // refused by the gate (or marked invalid): not flown
   const msg::PilotControls& pilot = *sample;
   if ((pilot.discretes() & msg::DISCRETE_INPUTS_INVALID) != 0) return;  // not the pilot's panel
   if (const auto problem = check_mcp(pilot.mcp())) {
@@ -119,6 +188,7 @@ void FlightComponent::take_pilot_forces(const runtime::FrameContext& frame) {
   const msg::PilotControls* sample = pilot_controls_.latest();
   if (sample == nullptr || pilot_controls_.updates() == forces_seen_) return;
   forces_seen_ = pilot_controls_.updates();
+  if (controls_accepted_ != forces_seen_) return;  // refused by the gate (or marked invalid)
   const msg::PilotControls& pilot = *sample;
   const bool sensors = (pilot.discretes() & msg::DISCRETE_FORCE_SENSORS) != 0 &&
                        (pilot.discretes() & msg::DISCRETE_INPUTS_INVALID) == 0;
@@ -206,13 +276,16 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
     if (afcs_) afcs_->reset();
     pending_presses_ = {};
     cws_ = {};
+    fill_applied_controls(model.controls(), gate_.last_good(), applied_);
   } else if (frame.running()) {
+    take_pilot_controls(frame);
     apply_pilot_controls(frame);
     if (setup_.autopilot) {
       take_mcp(frame);
       take_pilot_forces(frame);
       fly_autopilot(frame);
     }
+    fill_applied_controls(model.controls(), gate_.last_good(), applied_);  // what this step flies
     model.step(frame.dt_s);
     const std::uint64_t dropped = model.outputs().dropped_steps;
     if (dropped != dropped_steps_seen_) {
@@ -221,10 +294,22 @@ void FlightComponent::step(const runtime::FrameContext& frame) {
                                     " integration step(s) that gave a non-finite state");
       dropped_steps_seen_ = dropped;
     }
-  } else if (setup_.autopilot) {
-    take_mcp(frame);  // frozen: the panel's presses wait for the next RUN frame
+  } else {
+    take_pilot_controls(frame);  // frozen: checked and counted, flown from the next RUN frame
+    if (setup_.autopilot) take_mcp(frame);  // its presses wait for the next RUN frame
+    fill_applied_controls(model.controls(), gate_.last_good(), applied_);
   }
   write_state(frame);
+}
+
+void FlightComponent::on_stop() {
+  log().info("pilot_controls: {} samples flown, {} refused (other aircraft {}, not finite {}, out of range {}, "
+             "bad stamp {}), {} frames held, second writer seen {} times",
+             gate_.accepted(), gate_.rejected_total() + screen_.other_aircraft() + screen_.future_stamps(),
+             gate_.rejected(InputRejection::kOtherAircraft) + screen_.other_aircraft(),
+             gate_.rejected(InputRejection::kNotFinite), gate_.rejected(InputRejection::kOutOfRange),
+             gate_.rejected(InputRejection::kBadStamp) + screen_.future_stamps(), gate_.held_frames(),
+             gate_.second_writer_events());
 }
 
 void FlightComponent::write_state(const runtime::FrameContext& frame) {
@@ -236,6 +321,8 @@ void FlightComponent::write_state(const runtime::FrameContext& frame) {
   }
   state_.stamp(frame.end_stamp());  // the state after this frame's step
   aircraft_state_.write(state_);
+  applied_.stamp(frame.stamp());  // the controls this frame's step flew
+  applied_controls_.write(applied_);
   const auto& engines = setup_.model->outputs().engines;
   for (std::size_t i = 0; i < engines.size(); ++i) {
     fill_engine_state(engines[i], i, engine_);

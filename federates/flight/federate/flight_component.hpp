@@ -5,10 +5,18 @@
 // RESET returns to the start state. Commands: reposition (point, runway threshold, approach
 // gate), weather, failures (engine1..4, autopilot, autothrottle). Faults (counted, in the
 // federate status and the summary): "numerical" - the model dropped a step that would have
-// produced a non-finite state; "input_rejected" - a pilot-controls sample with a non-finite or
-// out-of-range value (the previous controls are kept), a bad MCP panel (the previous one is
-// kept), or bad force-sensor readings (non-finite or beyond 2000 N: the previous CWS inputs are
-// kept).
+// produced a non-finite state; pilot-controls samples refused by the input gate
+// (pilot_input_gate.hpp; the last good input is kept): "controls_other_aircraft",
+// "controls_not_finite", "controls_out_of_range", "controls_bad_stamp"; "input_rejected" - a bad MCP panel (the previous one is kept), or bad force-sensor
+// readings (non-finite or beyond 2000 N: the previous CWS inputs are kept). A writer that stops
+// writing costs at most the runtime's input timeout per frame: the last good input is flown,
+// held (logged when it starts and ends, frames counted in the stop summary). A second writer of
+// fedsim/pilot_controls (exclusive ownership: the strongest flies, e.g. a trainer taking over)
+// is a warning, "controls_second_writer", counted in the stop summary, not a fault.
+//
+// Writes fedsim/applied_controls every frame: the controls the model flew in that frame (after
+// the gate, relative-mode trim and the autopilot), so that a recording holds exactly what was
+// flown whatever the input topic carried (a flood, refused samples, a second writer).
 //
 // With the autopilot hosted (--autopilot, model/afcs/README.md "Where the AFCS runs"), each RUN
 // frame, after the pilot's controls are set and before the model steps: the AFCS reads the
@@ -24,6 +32,7 @@
 #include "common/runtime/component.hpp"
 #include "flight/federate/autopilot_adapter.hpp"
 #include "flight/federate/flight_adapter.hpp"
+#include "flight/federate/pilot_input_gate.hpp"
 #include "flight/federate/start_options.hpp"
 #include "flight/model/afcs/model_coupling.hpp"
 
@@ -49,12 +58,22 @@ class FlightComponent final : public runtime::Component {
 
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
+  void on_stop() override;
 
   const AircraftModel& model() const { return *setup_.model; }
   /// The hosted AFCS (nullptr without --autopilot, or before the first RUN frame).
   const afcs::Afcs* autopilot() const { return afcs_.get(); }
+  /// The pilot-controls gate (what was flown, refused, held).
+  const PilotInputGate& input_gate() const { return gate_; }
 
  private:
+  /// Every frame: a new pilot-controls sample through the gate (refusals counted by kind), the
+  /// writers counted (a second one warned of), the hold watched.
+  void take_pilot_controls(const runtime::FrameContext& frame);
+  void watch_controls_writers(const runtime::FrameContext& frame);
+  /// Reports what the screen kept from the port since the last frame (by kind, per sample).
+  void report_screened_controls(const runtime::FrameContext& frame);
+  /// RUN frames: the last good input to the model.
   void apply_pilot_controls(const runtime::FrameContext& frame);
   /// The pilot's wing-leveller switch (discrete bit) to the pack's wing leveller, logged on change.
   void apply_wing_leveller_switch(const runtime::FrameContext& frame);
@@ -75,6 +94,8 @@ class FlightComponent final : public runtime::Component {
   // ---- Ports -------------------------------------------------------------------------------
   // reads  fedsim/pilot_controls: lockstep input, frame N flies the controls of frame N-1.
   runtime::Input<msg::PilotControls>& pilot_controls_;
+  // writes fedsim/applied_controls every frame: the controls the model flew (as the state).
+  runtime::Output<msg::PilotControls>& applied_controls_;
   // writes fedsim/aircraft_state every frame (catalogue default "state", or --state-qos).
   runtime::Output<msg::AircraftState>& aircraft_state_;
   // writes fedsim/engine_state every frame, one sample (instance) per engine.
@@ -91,8 +112,12 @@ class FlightComponent final : public runtime::Component {
   FlightSetup setup_;
   AircraftControls trim_base_;  // relative controls fly about the latest trim
   std::uint64_t controls_seen_ = 0;       // pilot_controls_.updates() last checked
-  msg::PilotControls last_valid_controls_;
-  bool have_valid_controls_ = false;
+  std::uint64_t controls_accepted_ = 0;   // pilot_controls_.updates() of the last sample the gate took
+  PilotInputGate gate_;
+  PilotInputScreen screen_;               // where samples arrive (Input::accept_only)
+  std::uint64_t screened_other_ = 0;      // screen_ counts already reported
+  std::uint64_t screened_future_ = 0;
+  msg::PilotControls applied_;            // fedsim/applied_controls sample (reused)
   bool pilot_inputs_invalid_ = false;     // the I/O federate marks its samples invalid (device lost)
   std::uint64_t dropped_steps_seen_ = 0;
   msg::AircraftState state_;

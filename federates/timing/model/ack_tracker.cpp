@@ -17,6 +17,8 @@ void AckTracker::start_frame(std::uint64_t frame) {
   outstanding_ = 0;
   for (auto& m : members_) {
     m.acked = false;
+    if (m.readmitted) m.active = true;
+    m.readmitted = false;
     if (m.active) ++outstanding_;
   }
 }
@@ -35,10 +37,20 @@ bool AckTracker::remove(const std::string& federate) {
   const auto it = index_.find(federate);
   if (it == index_.end()) return false;
   Member& m = members_[it->second];
+  m.readmitted = false;
   if (!m.active) return false;
   m.active = false;
   if (m.acked) return false;
   return --outstanding_ == 0;
+}
+
+bool AckTracker::readmit(const std::string& federate) {
+  const auto it = index_.find(federate);
+  if (it == index_.end()) return false;
+  Member& m = members_[it->second];
+  if (m.active || m.readmitted) return false;
+  m.readmitted = true;
+  return true;
 }
 
 bool AckTracker::expects(const std::string& federate) const {

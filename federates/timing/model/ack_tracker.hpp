@@ -20,6 +20,9 @@ class AckTracker {
   bool acknowledge(const std::string& federate, std::uint64_t frame);
   /// Stops expecting a federate (lost or stopped); true if that completed the frame.
   bool remove(const std::string& federate);
+  /// Expects a removed federate again from the next start_frame (a frame boundary: the frame in
+  /// progress does not wait for it); false if it is unknown or still expected.
+  bool readmit(const std::string& federate);
 
   bool complete() const { return outstanding_ == 0; }
   std::uint64_t frame() const { return frame_; }
@@ -33,6 +36,7 @@ class AckTracker {
     std::string name;
     bool active = true;
     bool acked = false;
+    bool readmitted = false;  // active again from the next frame
   };
   std::vector<Member> members_;
   std::unordered_map<std::string, std::size_t> index_;

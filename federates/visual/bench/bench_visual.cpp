@@ -10,6 +10,8 @@
 // the frame rate the median allows. --png writes the last frame of the last size. The last line is
 // one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU): LP_NUM_THREADS sets its
 // rasteriser threads (default: the cores).
+#include "visual/model/egl_context.hpp"
+#include "visual/model/timing_summary.hpp"
 #include "common/units/units.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/renderer.hpp"
@@ -34,21 +36,9 @@ using fedsim::units::kDegToRad;
 using namespace fedsim::visual;
 using Clock = std::chrono::steady_clock;
 
-struct Stats {
-  double median_ms = 0.0, p99_ms = 0.0, max_ms = 0.0, mean_ms = 0.0;
-};
-
-Stats stats_of(std::vector<double> ms) {
-  std::sort(ms.begin(), ms.end());
-  Stats s;
-  s.median_ms = ms[ms.size() / 2];
-  s.p99_ms = ms[std::min(ms.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * ms.size())) - 1)];
-  s.max_ms = ms.back();
-  double sum = 0.0;
-  for (double v : ms) sum += v;
-  s.mean_ms = sum / ms.size();
-  return s;
-}
+// One summary for both benchmarks (visual/model/timing_summary.hpp).
+using Stats = fedsim::visual::TimingSummary;
+Stats stats_of(std::vector<double> ms) { return fedsim::visual::summarize_ms(std::move(ms)); }
 
 nlohmann::json to_json(const Stats& s) {
   return {{"median_ms", s.median_ms},
@@ -101,6 +91,9 @@ int main(int argc, char** argv) {
   app.add_option("--distance-nm", distance_nm, "start before the 28R threshold [NM]")
       ->check(CLI::Range(0.2, 20.0));
   app.add_option("--png", png, "write the last frame of the last size to this PNG");
+  std::string gl = "osmesa";
+  app.add_option("--gl", gl, "OpenGL context: osmesa, egl (a GPU's device, else Mesa surfaceless), auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}))->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -115,7 +108,9 @@ int main(int argc, char** argv) {
     const double build_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
     const std::size_t triangles = scene.triangles.size() / 3, lights = scene.lights.size();
-    Renderer renderer(std::move(scene));
+    std::string fallback;
+    Renderer renderer(std::move(scene), make_gl_context(*parse_gl_backend(gl), &fallback));
+    if (!fallback.empty()) std::printf("--gl auto: %s\n", fallback.c_str());
     renderer.set_clock([] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
           .count();

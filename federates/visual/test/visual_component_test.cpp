@@ -234,6 +234,64 @@ TEST_F(VisualComponentTest, ANanStateIsRejectedAndTheLastPictureStays) {
   EXPECT_GT(observer_.status.frames_rendered(), rendered);  // good samples render again
 }
 
+// --hud: the displays model's HUD drawn for this channel over its picture. The same state drawn
+// with and without it: the HUD's green symbology appears (none of the scene's pixels is that
+// green), the flight-path vector's ring is centred where the channel camera projects the
+// velocity (the aircraft flies the 3 deg path: the FPV sits 3 deg below the horizon; the scene
+// alone has only its few green threshold lights), and the
+// corners, away from the symbology, are the scene's pixels unchanged.
+Image render_once(bool hud) {
+  const auto dir = test::output_dir() / "component";
+  std::filesystem::create_directories(dir);
+  StateWriter writer;
+  VisualSetup setup = small_setup(dir.string());
+  setup.channel.width_px = 320;
+  setup.channel.height_px = 240;
+  if (hud) setup.hud = std::make_unique<displays::DisplayRenderer>();
+  VisualComponent visual("visual", std::move(setup));
+  runtime::Composition composition({});
+  composition.add(writer);
+  composition.add(visual);
+  msg::SimCommand run;
+  run.kind(msg::COMMAND_RUN_STATE);
+  run.run_state(msg::RUN_STATE_RUN);
+  composition.command(run);
+  composition.run(3);
+  composition.command(snapshot(hud ? "hud" : "no_hud", now_utc_ns()));
+  composition.run(1);
+  EXPECT_EQ(visual.fault_count(), 0u);
+  return read_png((dir / (std::string("centre_") + (hud ? "hud" : "no_hud") + ".png")).string());
+}
+
+TEST(VisualHud, TheHudIsCompositedOverTheChannelWhereTheCameraLooks) {
+  const Image plain = render_once(false), hud = render_once(true);
+  auto hud_green = [](const Rgba8& p) { return p.g > 200 && p.g > p.r + 60 && p.g > p.b + 60; };
+  int green_plain = 0, green_hud = 0;
+  double sum_row = 0;
+  int near_fpv = 0;
+  // The FPV: 3 deg below the zero-pitch line; vfov of the default channel, y down.
+  ChannelConfig channel;
+  const double fpv_row = 120.0 * (1.0 + std::tan(3.0 * kDegToRad) / std::tan(channel.vertical_fov_rad / 2.0));
+  for (int r = 0; r < 240; ++r) {
+    for (int c = 0; c < 320; ++c) {
+      green_plain += hud_green(plain.at(c, r));
+      if (!hud_green(hud.at(c, r))) continue;
+      ++green_hud;
+      if (std::abs(c - 160) < 12 && std::abs(r - fpv_row) < 12) {
+        sum_row += r + 0.5;
+        ++near_fpv;
+      }
+    }
+  }
+  EXPECT_LT(green_plain, 40);  // the threshold's green lights only
+  EXPECT_GT(green_hud, green_plain + 300);
+  ASSERT_GT(near_fpv, 10);  // the FPV's ring is there
+  EXPECT_NEAR(sum_row / near_fpv, fpv_row, 2.0);
+  for (const auto& [c, r] : {std::pair{2, 2}, std::pair{317, 237}, std::pair{317, 2}, std::pair{2, 237}}) {
+    EXPECT_EQ(hud.at(c, r).g, plain.at(c, r).g) << c << "," << r;
+  }
+}
+
 TEST(VisualHelpers, SnapshotTagsAndWeather) {
   EXPECT_FALSE(snapshot_tag_problem("approach_1-2"));
   EXPECT_FALSE(snapshot_tag_problem(""));

@@ -102,3 +102,36 @@ TEST(Deployment, SubstitutesKnownVariablesAndRejectsUnknownOnes) {
 
 }  // namespace
 }  // namespace fedsim::launcher
+
+namespace fedsim::launcher {
+namespace {
+
+// restart: no is the default; on-failure takes an optional bound; anything else names the
+// file, line and field as the other fields do.
+TEST(Deployment, ReadsAndChecksTheRestartPolicy) {
+  const auto d = parse_deployment(R"(
+name: demo
+federates:
+  - {name: io, binary: fedsim-io}
+  - {name: flight, binary: fedsim-flight, restart: on-failure}
+  - {name: nav, binary: fedsim-nav, restart: on-failure, max_restarts: 7}
+  - {name: motion, binary: fedsim-motion, restart: no}
+)", "demo.yaml");
+  ASSERT_EQ(d.federates.size(), 4u);
+  EXPECT_FALSE(d.federates[0].restart_on_failure);
+  EXPECT_TRUE(d.federates[1].restart_on_failure);
+  EXPECT_EQ(d.federates[1].max_restarts, 3);
+  EXPECT_EQ(d.federates[2].max_restarts, 7);
+  EXPECT_FALSE(d.federates[3].restart_on_failure);
+  expect_error("name: x\nfederates:\n  - {name: a, binary: b, restart: always}\n",
+               "bad.yaml:3: federates[0].restart: 'always' is not one of");
+  expect_error("name: x\nfederates:\n  - {name: a, binary: b, max_restarts: 2}\n",
+               "bad.yaml:3: federates[0].max_restarts: needs restart: on-failure");
+  expect_error("name: x\nfederates:\n  - {name: a, binary: b, restart: on-failure, max_restarts: 0}\n",
+               "bad.yaml:3: federates[0].max_restarts: value 0");
+  expect_error("name: x\nfederates:\n  - {name: a, binary: b, restart: on-failure, max_restarts: nan}\n",
+               "bad.yaml:3: federates[0].max_restarts");
+}
+
+}  // namespace
+}  // namespace fedsim::launcher

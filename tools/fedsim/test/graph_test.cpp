@@ -2,6 +2,7 @@
 // writer and a QoS mismatch are reported by name (the checks can fail).
 #include "fedsim/graph.hpp"
 #include "fedsim/launcher.hpp"
+#include "common/runtime/topic_catalogue.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,14 +50,14 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
   const DataFlowGraph graph =
       build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
   const std::string dot = graph_dot(graph);
-  EXPECT_NE(dot.find("\"io\" -> \"flight\" [label=\"fedsim/pilot_controls\\nlockstep_data\"]"),
+  EXPECT_NE(dot.find("\"io\" -> \"flight\" [label=\"fedsim/pilot_controls\\npilot_controls\"]"),
             std::string::npos)
       << dot;
   EXPECT_NE(dot.find("\"flight\" -> \"recorder\""), std::string::npos) << dot;
-  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, visual, ios, recorder"),
+  EXPECT_NE(graph_text(graph).find("flight -> fedsim/aircraft_state -> nav, motion, control_loading, visual, displays, ios, recorder"),
             std::string::npos)
       << graph_text(graph);
-  EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> ios, recorder"), std::string::npos);
+  EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> displays, ios, recorder"), std::string::npos);
   // The loader's autopilot input is a monitor: without an autopilot it is a note, not a problem.
   EXPECT_TRUE(graph.problems.empty());
   EXPECT_NE(std::find(graph.notes.begin(), graph.notes.end(),
@@ -92,7 +93,7 @@ federates:
     args: [--aircraft, c172, --trim, level, --ktas, "100"]
 )");
   EXPECT_TRUE(mentions(graph.problems, "QoS mismatch on fedsim/pilot_controls: flight reads "
-                                       "reliable ('lockstep_data'), io writes best effort ('state')"))
+                                       "reliable ('pilot_controls'), io writes best effort ('state')"))
       << graph_text(graph);
 }
 
@@ -106,6 +107,22 @@ federates:
   EXPECT_TRUE(mentions(graph.problems, "fedsim/pilot_controls has 2 writers (a, b)")) << graph_text(graph);
   EXPECT_TRUE(mentions(graph.problems, "'no_such_profile', which the QoS file does not define"))
       << graph_text(graph);
+}
+
+TEST(Graph, ThreeVisualChannelsEachOwnTheirInstancesOfTheChannelTopics) {
+  const DataFlowGraph graph = graph_of_text(R"(name: three
+federates:
+  - {name: flight, binary: fedsim-flight, args: [--aircraft, c172, --trim, level, --ktas, "100"]}
+  - {name: left, binary: fedsim-visual, args: [--channels, "${DATA_DIR}/visual/three_channels.yaml", --channel, left]}
+  - {name: centre, binary: fedsim-visual, args: [--channels, "${DATA_DIR}/visual/three_channels.yaml", --channel, centre]}
+  - {name: right, binary: fedsim-visual, args: [--channels, "${DATA_DIR}/visual/three_channels.yaml", --channel, right]}
+)");
+  // Keyed by channel: three writers of the status and picture topics are the design, while two
+  // writers of a topic that is not (the test above) remain a problem.
+  EXPECT_FALSE(mentions(graph.problems, "fedsim/visual_status has 3 writers")) << graph_text(graph);
+  EXPECT_FALSE(mentions(graph.problems, "fedsim/visual_picture has 3 writers")) << graph_text(graph);
+  ASSERT_TRUE(runtime::topics::find("fedsim/visual_status")->instance_per_writer);
+  EXPECT_FALSE(runtime::topics::find("fedsim/aircraft_state")->instance_per_writer);
 }
 
 }  // namespace

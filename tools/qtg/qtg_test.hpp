@@ -1,0 +1,89 @@
+// A QTG test as a validated value: what to fly (aircraft, start, input profile, duration, rate),
+// what the reference is (handbook, analytic or fedsim's own regression run) and which channels to
+// compare within which Part 60 tolerance. Format: data/qtg/README.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fedsim::qtg {
+
+/// How the run starts; the fields map one to one onto fedsim-fly's trim options.
+struct StartCondition {
+  std::string trim;  // level | climb | turn | ground
+  double alt_ft = 4000;
+  std::optional<double> ktas, kcas;
+  double heading_deg = 0, gamma_deg = 0, bank_deg = 0, flaps = 0, throttle = 0;
+  double runway_elevation_m = 0;
+};
+
+/// A Part 60 tolerance: +/- an absolute amount in the compared quantity's unit, or a percentage
+/// of the reference value.
+struct Tolerance {
+  enum class Kind { absolute, percent } kind = Kind::absolute;
+  double amount = 0;
+  std::string unit;  // absolute: must equal the compared quantity's unit ("1" dimensionless)
+  /// The allowed deviation at a reference value.
+  double band(double reference) const;
+  std::string text() const;  // e.g. "±3 kt", "±10 %"
+};
+
+enum class Measure {
+  time_history,   // the channel against the reference CSV's column, interpolated in time
+  period,         // oscillation period from the channel's extrema (s)
+  damping_ratio,  // from successive half-cycle amplitudes (dimensionless)
+  time_to,        // first time the channel crosses `threshold` after `from_s` (s)
+  value_at,       // the channel at `at_s` (or the last frame when at_s is absent)
+  value_when,     // the channel when `when_channel` first crosses `threshold`
+  minimum,
+  maximum,
+};
+
+struct Check {
+  std::string name;
+  std::string channel;
+  Measure measure = Measure::time_history;
+  double from_s = 0;                    // window start (all measures)
+  std::optional<double> to_s;           // window end (default: end of run)
+  std::optional<double> at_s;           // value_at
+  std::optional<double> threshold;      // time_to, value_when
+  std::string when_channel;             // value_when
+  std::optional<double> reference_value;  // derived measures
+  std::string reference_column;         // time_history (default: the channel)
+  Tolerance tolerance;
+  int line = 0;  // where the check is in its file
+};
+
+struct Reference {
+  std::string kind;    // handbook | analytic | regression
+  std::string source;  // what it is, named (never presented as flight data unless it is)
+  std::string file;    // a time-history CSV, absolute (resolved against the test file)
+};
+
+struct QtgTest {
+  std::string path;  // the YAML file
+  std::string name;  // file stem, unique key for --only
+  std::string title;
+  std::string part60_item;
+  std::string aircraft;
+  StartCondition start;
+  std::string inputs;  // resolved profile path, or empty
+  bool inputs_relative = true;
+  double duration_s = 0, rate_hz = 0;
+  Reference reference;
+  std::vector<Check> checks;
+};
+
+std::string measure_name(Measure m);
+/// The unit of what a check compares: s for period and time_to, "1" for the damping ratio,
+/// otherwise the channel's unit (the suffix of its name).
+std::string measure_unit(const Check& check);
+
+/// Loads and validates one test; throws util::ConfigError "file:line: field: problem".
+/// `search_dirs` are where a relative profile path is looked up after the test file's folder.
+QtgTest load_test(const std::string& path, const std::vector<std::string>& search_dirs = {});
+/// Every *.yaml under `dir` (recursively), sorted by path.
+std::vector<std::string> find_tests(const std::string& dir);
+
+}  // namespace fedsim::qtg
