@@ -13,6 +13,14 @@ inline std::uint64_t monotonic_ns() {
          static_cast<std::uint64_t>(ts.tv_nsec);
 }
 
+/// CLOCK_REALTIME (UTC) in nanoseconds, signed: for stamps compared with other processes'
+/// (e.g. a command issued before a federate started), never for frame timing.
+inline std::int64_t utc_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000ll + static_cast<std::int64_t>(ts.tv_nsec);
+}
+
 /// Sleeps until an absolute CLOCK_MONOTONIC time (no drift accumulates across frames).
 inline void sleep_until_ns(std::uint64_t deadline_ns) {
   timespec ts{};

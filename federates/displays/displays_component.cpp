@@ -2,6 +2,7 @@
 
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
+#include "common/util/monotonic_clock.hpp"
 #include "visual/model/egl_context.hpp"
 #include "visual/visual_component.hpp"
 
@@ -13,15 +14,8 @@
 namespace fedsim::displays {
 namespace {
 
-std::int64_t monotonic_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-std::int64_t utc_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
+std::int64_t monotonic_ns() { return static_cast<std::int64_t>(util::monotonic_ns()); }
+using util::utc_ns;
 
 }  // namespace
 

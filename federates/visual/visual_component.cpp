@@ -3,6 +3,7 @@
 #include "common/navdb/nav_database.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
+#include "common/util/monotonic_clock.hpp"
 #include "flight/federate/start_options.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
@@ -21,15 +22,8 @@
 namespace fedsim::visual {
 namespace {
 
-std::int64_t monotonic_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-std::int64_t utc_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
+std::int64_t monotonic_ns() { return static_cast<std::int64_t>(util::monotonic_ns()); }
+using util::utc_ns;
 
 MovingPose moving_pose_of(const msg::AircraftState& s) {
   MovingPose m;

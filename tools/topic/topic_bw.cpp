@@ -35,27 +35,12 @@ int run_topic_bw(const BwOptions& options, std::ostream& out, std::ostream& err)
     auto dds_options = options.dds;
     if (dds_options.name == "fedsim") dds_options.name = "fedsim-topic-bw";
     auto monitor = TopicMonitor::create(dds_options);
-    const auto topic = discover_topic(*monitor, options.topic, to_ms(options.wait_s));
-    if (!topic) {
-      err << "fedsim topic bw: topic '" << options.topic << "' not found on domain "
-          << options.dds.domain_id << " after " << options.wait_s
-          << " s (`fedsim topic list` shows the live topics)\n";
-      return 1;
-    }
-    if (topic->type_names.size() != 1) {
-      err << "fedsim topic bw: topic '" << options.topic << "' is used with several types\n";
-      return 1;
-    }
-    bool keyed = false;
-    std::uint32_t max_size = 0;
-    for (const auto& e : topic->writers) {
-      keyed = keyed || e.keyed;
-      max_size = std::max(max_size, e.max_serialized_size);
-    }
-    if (topic->writers.empty()) {
-      for (const auto& e : topic->readers) keyed = keyed || e.keyed;
-      err << "fedsim topic bw: '" << options.topic << "' has no writer yet; waiting for one\n";
-    }
+    const auto shape = discover_raw_topic(*monitor, "bw", options.topic, to_ms(options.wait_s),
+                                          options.dds.domain_id, err);
+    if (!shape) return 1;
+    const TopicInfo* topic = &shape->topic;
+    const bool keyed = shape->keyed;
+    const std::uint32_t max_size = shape->max_size;
     fdds::TypeSupport support(new RawPubSubType(*topic->type_names.begin(), keyed,
                                                 max_size > 0 ? max_size : 65000));
     std::mutex mutex;

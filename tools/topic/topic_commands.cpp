@@ -48,12 +48,15 @@ void add_echo(CLI::App& topic) {
   cmd->callback([options] { exit_with(run_topic_echo(*options, std::cout, std::cerr)); });
 }
 
-void add_hz(CLI::App& topic) {
-  auto options = std::make_shared<HzOptions>();
-  auto* cmd = topic.add_subcommand("hz", "print the receive rate of a topic once a second");
+/// The options `hz` and `bw` share: the topic, a sliding window of samples, how long to wait for
+/// the topic, how long to run.
+template <class Options>
+CLI::App* add_window_command(CLI::App& topic, const std::string& name, const std::string& what,
+                             const std::shared_ptr<Options>& options, double min_window) {
+  auto* cmd = topic.add_subcommand(name, what);
   cmd->add_option("topic", options->topic, "topic name")->required();
   cmd->add_option("-w,--window", options->window, "samples in the sliding window")
-      ->check(fedsim::util::FiniteRange(2, 100000000))
+      ->check(fedsim::util::FiniteRange(min_window, 100000000))
       ->capture_default_str();
   cmd->add_option("--wait", options->wait_s, "how long to wait for the topic to appear [s]")
       ->check(fedsim::util::kFiniteNonNegative)
@@ -61,23 +64,19 @@ void add_hz(CLI::App& topic) {
   cmd->add_option("--duration", options->duration_s, "stop after this many seconds (0 = Ctrl-C)")
       ->check(fedsim::util::kFiniteNonNegative);
   runtime::add_dds_options(*cmd, options->dds);
+  return cmd;
+}
+
+void add_hz(CLI::App& topic) {
+  auto options = std::make_shared<HzOptions>();
+  auto* cmd = add_window_command(topic, "hz", "print the receive rate of a topic once a second", options, 2);
   cmd->callback([options] { exit_with(run_topic_hz(*options, std::cout, std::cerr)); });
 }
 
 void add_bw(CLI::App& topic) {
   auto options = std::make_shared<BwOptions>();
-  auto* cmd = topic.add_subcommand(
-      "bw", "print the bandwidth of a topic once a second: bytes/s, samples/s, sample sizes");
-  cmd->add_option("topic", options->topic, "topic name")->required();
-  cmd->add_option("-w,--window", options->window, "samples in the sliding window")
-      ->check(fedsim::util::FiniteRange(1, 100000000))
-      ->capture_default_str();
-  cmd->add_option("--wait", options->wait_s, "how long to wait for the topic to appear [s]")
-      ->check(fedsim::util::kFiniteNonNegative)
-      ->capture_default_str();
-  cmd->add_option("--duration", options->duration_s, "stop after this many seconds (0 = Ctrl-C)")
-      ->check(fedsim::util::kFiniteNonNegative);
-  runtime::add_dds_options(*cmd, options->dds);
+  auto* cmd = add_window_command(
+      topic, "bw", "print the bandwidth of a topic once a second: bytes/s, samples/s, sample sizes", options, 1);
   cmd->callback([options] { exit_with(run_topic_bw(*options, std::cout, std::cerr)); });
 }
 

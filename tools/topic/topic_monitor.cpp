@@ -1,5 +1,7 @@
 #include "tools/topic/topic_monitor.hpp"
 
+#include <ostream>
+
 #include "common/runtime/shutdown.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -267,6 +269,31 @@ std::optional<TopicInfo> discover_topic(TopicMonitor& monitor, const std::string
     found = monitor.topic(topic);
   }
   return found;
+}
+
+std::optional<RawTopicShape> discover_raw_topic(TopicMonitor& monitor, const std::string& command,
+                                                const std::string& topic, std::chrono::milliseconds wait,
+                                                int domain_id, std::ostream& err) {
+  const auto found = discover_topic(monitor, topic, wait);
+  if (!found) {
+    err << "fedsim topic " << command << ": topic '" << topic << "' not found on domain " << domain_id
+        << " after " << wait.count() / 1000.0 << " s (`fedsim topic list` shows the live topics)\n";
+    return std::nullopt;
+  }
+  if (found->type_names.size() != 1) {
+    err << "fedsim topic " << command << ": topic '" << topic << "' is used with several types\n";
+    return std::nullopt;
+  }
+  RawTopicShape shape{*found, *found->type_names.begin()};
+  for (const auto& e : found->writers) {
+    shape.keyed = shape.keyed || e.keyed;
+    shape.max_size = std::max(shape.max_size, e.max_serialized_size);
+  }
+  if (found->writers.empty()) {
+    for (const auto& e : found->readers) shape.keyed = shape.keyed || e.keyed;
+    err << "fedsim topic " << command << ": '" << topic << "' has no writer yet; waiting for one\n";
+  }
+  return shape;
 }
 
 ftypes::DynamicType_ptr dynamic_type_for(const TopicInfo& topic) {

@@ -113,6 +113,20 @@ fdds::DataReaderQos reader_qos_matching(const std::vector<EndpointInfo>& writers
 std::optional<TopicInfo> discover_topic(TopicMonitor& monitor, const std::string& topic,
                                         std::chrono::milliseconds wait);
 
+/// What a raw reader (`fedsim topic hz|bw`, any type) needs of a discovered topic.
+struct RawTopicShape {
+  TopicInfo topic;
+  std::string type_name;
+  bool keyed = false;           // any writer (or, without writers, reader) says WITH_KEY
+  std::uint32_t max_size = 0;   // the largest serialized size a writer announced (0: unknown)
+};
+/// discover_topic for the command `command` ("hz", "bw"): nullopt, with the reason on `err`
+/// ("fedsim topic <command>: ..."), if the topic is not found or has several types; a note on
+/// `err` if it has no writer yet.
+std::optional<RawTopicShape> discover_raw_topic(TopicMonitor& monitor, const std::string& command,
+                                                const std::string& topic, std::chrono::milliseconds wait,
+                                                int domain_id, std::ostream& err);
+
 /// The DynamicType of a discovered topic: from fedsim's registered TypeObjects by type name,
 /// else from a complete TypeObject a writer sent. Throws runtime::DdsError with a clear message
 /// if neither is available or the topic's endpoints disagree on the type.

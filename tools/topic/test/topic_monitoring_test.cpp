@@ -1,5 +1,6 @@
 // `fedsim topic info` and `fedsim topic bw` over loopback (profile fedsim_loopback, domains 170
 // and 171): an in-process runtime::Publisher writes, the tools discover and measure it.
+#include "tools/topic/test/test_support.hpp"
 #include "tools/topic/topic_tools.hpp"
 
 #include "common/runtime/federate_options.hpp"
@@ -28,14 +29,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-runtime::ParticipantOptions loopback(int domain, const std::string& name) {
-  runtime::ParticipantOptions options;
-  options.domain_id = domain;
-  options.name = name;
-  options.qos_file = runtime::default_qos_file();
-  options.participant_profile = "fedsim_loopback";
-  return options;
-}
+using test::loopback;
 
 TEST(TopicInfo, ShowsTheWritersAndReadersQosParticipantAndLocators) {
   auto dds = runtime::DdsParticipant::create(loopback(170, "info_test_io"));

@@ -1,5 +1,6 @@
 // Replay of a recording: the row -> DynamicData inverse of the recorder's flattening (pure, exact
 // round trips), the loader's checks, and the replayer over loopback DDS (domains 171-175).
+#include "tools/topic/test/test_support.hpp"
 #include "tools/topic/topic_recorder.hpp"
 #include "tools/topic/topic_replay.hpp"
 #include "tools/topic/topic_tools.hpp"
@@ -347,14 +348,7 @@ TEST(ReplayCli, ChecksEveryNumber) {
 
 // ---- over DDS ----------------------------------------------------------------------------------
 
-runtime::ParticipantOptions loopback(int domain, const std::string& name) {
-  runtime::ParticipantOptions options;
-  options.domain_id = domain;
-  options.name = name;
-  options.qos_file = runtime::default_qos_file();
-  options.participant_profile = "fedsim_loopback";
-  return options;
-}
+using test::loopback;
 
 /// Keeps every sample a typed reader (the topic's default "state" QoS, as a display) receives.
 template <class T>

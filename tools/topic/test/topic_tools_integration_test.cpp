@@ -1,5 +1,6 @@
 // Integration tests over loopback (profile fedsim_loopback, one domain per test in 160-169): an
 // in-process runtime::Publisher<T> writes, the tools discover, print and record it.
+#include "tools/topic/test/test_support.hpp"
 #include "tools/topic/raw_type.hpp"
 #include "tools/topic/topic_commands.hpp"
 #include "tools/topic/topic_tools.hpp"
@@ -24,14 +25,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-runtime::ParticipantOptions loopback(int domain, const std::string& name) {
-  runtime::ParticipantOptions options;
-  options.domain_id = domain;
-  options.name = name;
-  options.qos_file = runtime::default_qos_file();
-  options.participant_profile = "fedsim_loopback";
-  return options;
-}
+using test::loopback;
 
 /// "RELIABLE TRANSIENT_LOCAL" etc. for a writer's actual QoS (the profiles belong to qos/).
 template <class T>
