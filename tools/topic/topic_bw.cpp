@@ -53,26 +53,14 @@ int run_topic_bw(const BwOptions& options, std::ostream& out, std::ostream& err)
                            window.add(now_ns(), bytes);
                          });
 
-    const auto start = std::chrono::steady_clock::now();
-    const auto period = to_ms(options.report_period_s > 0 ? options.report_period_s : 1.0);
     std::uint64_t reported_total = 0;
-    for (;;) {
-      if (runtime::wait_for_shutdown(period)) break;
-      std::string report;
-      {
-        std::lock_guard lock(mutex);
-        report = window.total_samples() == reported_total
-                     ? std::string("no new messages\n")
-                     : format_bandwidth(window.stats(now_ns()));
-        reported_total = window.total_samples();
-      }
-      out << report;
-      out.flush();
-      if (options.duration_s > 0 &&
-          std::chrono::steady_clock::now() - start >= to_ms(options.duration_s)) {
-        break;
-      }
-    }
+    report_periodically(options.report_period_s, options.duration_s, [&] {
+      std::lock_guard lock(mutex);
+      std::string report = window.total_samples() == reported_total ? std::string("no new messages\n")
+                                                                    : format_bandwidth(window.stats(now_ns()));
+      reported_total = window.total_samples();
+      return report;
+    }, out);
     reader.close();
     return 0;
   } catch (const std::exception& e) {

@@ -80,28 +80,18 @@ int run_topic_hz(const HzOptions& options, std::ostream& out, std::ostream& err)
                            ++total;
                          });
 
-    const auto start = std::chrono::steady_clock::now();
-    const auto period = to_ms(options.report_period_s > 0 ? options.report_period_s : 1.0);
     std::uint64_t reported_total = 0;
-    for (;;) {
-      if (runtime::wait_for_shutdown(period)) break;
+    report_periodically(options.report_period_s, options.duration_s, [&] {
+      std::lock_guard lock(mutex);
       std::string report;
-      {
-        std::lock_guard lock(mutex);
-        if (total == reported_total) {
-          report = "no new messages\n";
-        } else if (stamps_ns.size() >= 2) {
-          report = format_report(stamps_ns);
-        }
-        reported_total = total;
+      if (total == reported_total) {
+        report = "no new messages\n";
+      } else if (stamps_ns.size() >= 2) {
+        report = format_report(stamps_ns);
       }
-      out << report;
-      out.flush();
-      if (options.duration_s > 0 &&
-          std::chrono::steady_clock::now() - start >= to_ms(options.duration_s)) {
-        break;
-      }
-    }
+      reported_total = total;
+      return report;
+    }, out);
     reader.close();
     return 0;
   } catch (const std::exception& e) {

@@ -1,7 +1,5 @@
 #include "tools/topic/topic_monitor.hpp"
 
-#include <ostream>
-
 #include "common/runtime/shutdown.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -10,6 +8,7 @@
 
 #include <limits>
 #include <mutex>
+#include <ostream>
 #include <regex>
 #include <sstream>
 #include <thread>
@@ -294,6 +293,18 @@ std::optional<RawTopicShape> discover_raw_topic(TopicMonitor& monitor, const std
     err << "fedsim topic " << command << ": '" << topic << "' has no writer yet; waiting for one\n";
   }
   return shape;
+}
+
+void report_periodically(double period_s, double duration_s, const std::function<std::string()>& report,
+                         std::ostream& out) {
+  const auto ms = [](double s) { return std::chrono::milliseconds(static_cast<long long>(s * 1000.0)); };
+  const auto start = std::chrono::steady_clock::now();
+  const auto period = ms(period_s > 0 ? period_s : 1.0);
+  while (!runtime::wait_for_shutdown(period)) {
+    out << report();
+    out.flush();
+    if (duration_s > 0 && std::chrono::steady_clock::now() - start >= ms(duration_s)) break;
+  }
 }
 
 ftypes::DynamicType_ptr dynamic_type_for(const TopicInfo& topic) {

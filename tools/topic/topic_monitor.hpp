@@ -127,6 +127,11 @@ std::optional<RawTopicShape> discover_raw_topic(TopicMonitor& monitor, const std
                                                 const std::string& topic, std::chrono::milliseconds wait,
                                                 int domain_id, std::ostream& err);
 
+/// Prints `report()` every `period_s` seconds (1 s if not positive) until Ctrl-C/SIGTERM or, with
+/// `duration_s` > 0, until that many seconds have passed (`fedsim topic hz|bw`).
+void report_periodically(double period_s, double duration_s, const std::function<std::string()>& report,
+                         std::ostream& out);
+
 /// The DynamicType of a discovered topic: from fedsim's registered TypeObjects by type name,
 /// else from a complete TypeObject a writer sent. Throws runtime::DdsError with a clear message
 /// if neither is available or the topic's endpoints disagree on the type.
