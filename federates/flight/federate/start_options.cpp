@@ -29,19 +29,26 @@ void add_start_options(CLI::App& app, StartOptions& o) {
   auto* trim = app.add_option("--trim", o.trim_kind, "trim: level | climb | turn | ground")
                    ->check(CLI::IsMember({"level", "climb", "turn", "ground"}));
   ic->excludes(trim);
-  app.add_option("--alt-ft", o.alt_ft, "trim altitude above MSL [ft]")->capture_default_str();
-  app.add_option("--ktas", o.ktas, "trim true airspeed [kt]");
-  app.add_option("--kcas", o.kcas, "trim calibrated airspeed [kt]");
-  app.add_option("--heading", o.heading_deg, "true heading [deg]")->capture_default_str();
+  // Every number is checked here (NaN, infinities, ranges), so a typo is an error naming the
+  // option, never a start somewhere absurd (--heading 1e300 used to fly).
+  app.add_option("--alt-ft", o.alt_ft, "trim altitude above MSL [ft]")
+      ->check(fedsim::util::FiniteRange(-1500.0, 100000.0))->capture_default_str();
+  app.add_option("--ktas", o.ktas, "trim true airspeed [kt]")->check(fedsim::util::FiniteRange(1.0, 2000.0));
+  app.add_option("--kcas", o.kcas, "trim calibrated airspeed [kt]")->check(fedsim::util::FiniteRange(1.0, 2000.0));
+  app.add_option("--heading", o.heading_deg, "true heading [deg]")
+      ->check(fedsim::util::FiniteRange(-360.0, 360.0))->capture_default_str();
   app.add_option("--lat", o.lat_deg, "latitude [deg]")->check(fedsim::util::FiniteRange(-90.0, 90.0))->capture_default_str();
   app.add_option("--lon", o.lon_deg, "longitude [deg]")->check(fedsim::util::FiniteRange(-180.0, 180.0))->capture_default_str();
-  app.add_option("--gamma-deg", o.gamma_deg, "climb: flight-path angle [deg], + climbing");
-  app.add_option("--bank-deg", o.bank_deg, "turn: bank angle [deg], + right");
+  app.add_option("--gamma-deg", o.gamma_deg, "climb: flight-path angle [deg], + climbing")
+      ->check(fedsim::util::FiniteRange(-45.0, 45.0));
+  app.add_option("--bank-deg", o.bank_deg, "turn: bank angle [deg], + right")
+      ->check(fedsim::util::FiniteRange(-80.0, 80.0));
   app.add_option("--flaps", o.flaps, "flap setting held in the trim, 0..1")->check(fedsim::util::FiniteRange(0.0, 1.0));
   app.add_option("--throttle", o.throttle,
                  "ground start (--trim ground, --airport/--runway): throttle of every engine, "
                  "0 (idle) .. 1 (full), engines settled, brakes set");
-  app.add_option("--runway-elevation-m", o.runway_elevation_m, "terrain plane above MSL [m]");
+  app.add_option("--runway-elevation-m", o.runway_elevation_m, "terrain plane above MSL [m]")
+      ->check(fedsim::util::FiniteRange(-500.0, 9000.0));
   app.add_option("--airport", o.airport, "ground start: airport (ICAO), with --runway");
   app.add_option("--runway", o.runway, "ground start: runway end, e.g. 28R");
   app.add_option("--approach-nm", o.approach_nm,

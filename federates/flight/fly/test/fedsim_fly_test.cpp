@@ -187,6 +187,13 @@ TEST_F(FedsimFly, BadInputExitsTwoWithAMessageAndNoCsv) {
       {{"--aircraft", "c172", "--trim", "ground", "--throttle", "1.5"}, "--throttle"},
       {{"--aircraft", "c172", "--trim", "ground", "--throttle", "-0.1"}, "--throttle"},
       {join(level_trim(), {"--throttle", "0.5"}), "--throttle sets the engines of a ground start"},
+      // Start numbers out of range or not finite (the heading once flew at 1e300).
+      {{"--aircraft", "c172", "--trim", "level", "--ktas", "100", "--heading", "1e300"}, "--heading"},
+      {{"--aircraft", "c172", "--trim", "level", "--ktas", "nan"}, "--ktas"},
+      {{"--aircraft", "c172", "--trim", "level", "--ktas", "100", "--alt-ft", "inf"}, "--alt-ft"},
+      {{"--aircraft", "c172", "--trim", "turn", "--ktas", "100", "--bank-deg", "95"}, "--bank-deg"},
+      {{"--aircraft", "c172", "--trim", "climb", "--ktas", "100", "--gamma-deg", "nan"}, "--gamma-deg"},
+      {{"--aircraft", "c172", "--trim", "ground", "--runway-elevation-m", "-1e9"}, "--runway-elevation-m"},
   };
   for (const Case& c : cases) {
     const FlyRun run = fly(join(c.args, {"--duration", "1", "--rate", "50", "--out", out}));
