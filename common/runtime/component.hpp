@@ -206,6 +206,10 @@ class Component {
   virtual double tick_watchdog_periods() const { return 0.0; }
   /// `last`: the context of the last frame stepped; `silent_s`: wall time since its tick.
   virtual void on_ticks_stopped(const FrameContext& last, double silent_s) {}
+  /// A short line for whoever watches the run (the flight federate: phase of flight, distance
+  /// to go, modes), sent with the periodic status (FederateStatus.message, 127 characters) and
+  /// shown in `fedsim run`'s progress lines. Called between steps; empty: nothing to say.
+  virtual std::string progress_note() const { return {}; }
 
   /// The faults reported so far, by kind.
   const std::vector<FaultReport>& faults() const { return faults_; }

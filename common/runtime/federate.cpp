@@ -504,7 +504,9 @@ void Federate::frame_loop() {
     }
     if (std::chrono::steady_clock::now() >= next_status) {
       next_status += kStatusPeriod;
-      publish_status(announced_running ? msg::FEDERATE_RUNNING : msg::FEDERATE_READY, "");
+      // Between steps, on the frame thread: the component's note cannot race its step.
+      publish_status(announced_running ? msg::FEDERATE_RUNNING : msg::FEDERATE_READY,
+                     stepped_any_ ? component_->progress_note() : std::string());
     }
   }
 }

@@ -299,19 +299,47 @@ void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   if (visual_picture_.write(picture_)) ++pictures_sent_;
 }
 
+bool VisualComponent::capture_due() {
+  if (setup_.capture_png.empty() || captured_ || aircraft_state_.updates() == capture_state_seen_) return false;
+  capture_state_seen_ = aircraft_state_.updates();
+  const double height_m = aircraft_state_.latest()->height_agl_m();
+  if (height_m > setup_.capture_agl_m) {
+    capture_armed_ = true;  // a start below the height captures nothing: it never descends through it
+    return false;
+  }
+  return capture_armed_;
+}
+
+void VisualComponent::write_capture() {
+  captured_ = true;
+  try {
+    write_png(image_, setup_.capture_png);
+    log().info("at {:.0f} ft above the runway (frame {}, t={:.2f}s) -> {}", setup_.capture_agl_m * units::kMToFt,
+               image_stamp_.frame(), image_stamp_.sim_time_s(), setup_.capture_png);
+  } catch (const std::exception& e) {
+    report_fault("snapshot_failed", e.what());
+  }
+}
+
 void VisualComponent::step(const runtime::FrameContext& frame) {
   const bool usable = check_new_state(frame);  // every new sample is checked, drawn or not
   const bool slot = render_slot(frame);
   const bool snapshot = pending_snapshot_.has_value();
-  if (usable && (slot || snapshot || !have_image_)) {
+  const bool capture = usable && capture_due();
+  if (usable && (slot || snapshot || capture || !have_image_)) {
     const Drawn drawn = *render(frame);
     if (snapshot) write_snapshot(frame);
+    if (capture) write_capture();
     publish_status(frame, drawn.stats, drawn.state_age_s, static_cast<double>(monotonic_ns() - drawn.start_ns) / 1e6);
   }
   publish_picture(frame);
 }
 
 void VisualComponent::on_stop() {
+  if (!setup_.capture_png.empty() && !captured_) {
+    log().warn("the aircraft never descended through {:.0f} ft above the runway: {} not written",
+               setup_.capture_agl_m * units::kMToFt, setup_.capture_png);
+  }
   if (setup_.final_png.empty()) return;
   if (!have_image_) {
     log().warn("no image was rendered (no aircraft state arrived): {} not written", setup_.final_png);
@@ -337,6 +365,8 @@ struct Options {
   int jpeg_quality = 75, stream_downscale = 2;
   std::string snapshot_dir = ".";
   std::string final_png;
+  double capture_agl_ft = 0.0;
+  std::string capture_png;
   double visibility_m = 20000.0, cloud_base_m = 0.0;
   std::string utc = "2026-06-21T19:00:00";
   std::string lights = "on";
@@ -398,6 +428,11 @@ runtime::FederateProgram program() {
         ->check(CLI::Range(1, 8))->capture_default_str();
     app.add_option("--snapshot-dir", o->snapshot_dir, "folder of `fedsim command snapshot` PNGs")->capture_default_str();
     app.add_option("--final-png", o->final_png, "write the last image here when the federate stops");
+    app.add_option("--capture-agl-ft", o->capture_agl_ft,
+                   "with --capture-png: the height above the runway to capture the picture at, descending "
+                   "(e.g. the decision height)")
+        ->check(util::FiniteRange(1.0, 10000.0));
+    app.add_option("--capture-png", o->capture_png, "write the picture at --capture-agl-ft here");
     app.add_option("--visibility-m", o->visibility_m, "visibility (MOR) until a weather command")
         ->check(util::FiniteRange(10.0, 1e6))->capture_default_str();
     app.add_option("--cloud-base-m", o->cloud_base_m, "cloud base above the airport (0: no cloud)")
@@ -435,6 +470,11 @@ runtime::FederateProgram program() {
     }
     setup.snapshot_dir = o->snapshot_dir;
     setup.final_png = o->final_png;
+    if (o->capture_png.empty() != (o->capture_agl_ft == 0.0)) {
+      throw std::invalid_argument("--capture-png and --capture-agl-ft go together");
+    }
+    setup.capture_png = o->capture_png;
+    setup.capture_agl_m = o->capture_agl_ft * units::kFtToM;
     setup.environment.visibility_m = o->visibility_m;
     if (o->cloud_base_m > 0.0) setup.environment.cloud = CloudLayer{o->cloud_base_m, o->cloud_base_m + 1000.0, 60.0};
     setup.environment.airport_lights_on = o->lights == "on";

@@ -55,6 +55,12 @@ struct VisualSetup {
   JpegOptions jpeg{75, 2};
   std::string snapshot_dir = ".";    // where snapshot PNGs go
   std::string final_png;             // the last image written here on stop ("" = none)
+  // The picture at a height (the decision height of an approach): the first image whose aircraft
+  // state is at or below capture_agl_m after one above it, drawn in that frame whatever the
+  // render rate, written to capture_png ("" = none). The height is the flight model's
+  // height_agl_m (the CG above the runway plane), so every channel captures the same frame.
+  double capture_agl_m = 0.0;
+  std::string capture_png;
   Environment environment;           // until the instructor says otherwise
   UtcTime time_of_day{2026, 6, 21, 19.0 * 3600.0};  // UTC at sim time 0 (noon at KSFO, PDT)
   bool time_of_day_set = true;       // false: the environment's own sun stays
@@ -90,6 +96,9 @@ class VisualComponent final : public runtime::Component {
   std::optional<Drawn> render(const runtime::FrameContext& frame);
   void update_sun(double sim_time_s, double lat_rad, double lon_rad);
   void write_snapshot(const runtime::FrameContext& frame);
+  /// True in the frame whose new state first descends through the capture height.
+  bool capture_due();
+  void write_capture();
   void publish_picture(const runtime::FrameContext& frame);
   void publish_status(const runtime::FrameContext& frame, const RenderStats& stats, double state_age_s,
                       double step_ms);
@@ -110,6 +119,9 @@ class VisualComponent final : public runtime::Component {
   std::int64_t last_render_slot_ = -1, last_stream_slot_ = -1;
   double time_of_day_epoch_sim_s_ = 0.0;  // sim time at which time_of_day applies
   std::optional<std::string> pending_snapshot_;
+  bool capture_armed_ = false;            // a state above the capture height was seen
+  bool captured_ = false;
+  std::uint64_t capture_state_seen_ = 0;  // aircraft_state_.updates() last looked at for it
   double mean_render_s_ = 0.0;            // recent render time (realtime display-time lead) [s]
   std::uint64_t frames_rendered_ = 0, pictures_sent_ = 0;
   std::uint32_t snapshots_written_ = 0;

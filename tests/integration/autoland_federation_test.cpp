@@ -45,9 +45,9 @@ double last_value(const std::string& csv, const std::string& column) {
   return std::nan("");
 }
 
-// The ILS approach and autoland deployment (the README's): over DDS in lockstep the 737 lands
-// and stops under the autopilot, and the in-process composition of the same file computes the
-// same recording byte for byte.
+// The ILS approach and autoland deployment (the README's main job): over DDS in lockstep the 737
+// lands and stops under the autopilot, and the in-process composition of the same file computes
+// the same recording (and the same pictures at the decision height) byte for byte.
 TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
   const std::string dir = temp_dir("ils_autoland");
   const std::string yaml = std::string(FEDSIM_SOURCE_DIR) + "/deploy/ils-autoland.yaml";
@@ -86,6 +86,16 @@ TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
   EXPECT_EQ(last_value(dds_loading, "pitch_backdriven"), 1.0);
   EXPECT_EQ(last_value(dds_loading, "stick_shaker"), 0.0);  // inhibited on the ground
   EXPECT_TRUE(dds_loading == read_file(dir + "/in_process/fedsim_control_loading_state.csv"));
+  // The three channels at the decision height, stitched; each channel's picture is drawn from
+  // the same state in both runs, so the pictures are the same bytes.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/dds/decision_height.png"));
+  for (const char* channel : {"left", "centre", "right"}) {
+    const std::string name = std::string("/dh_") + channel + ".png";
+    EXPECT_TRUE(read_file(dir + "/dds" + name) == read_file(dir + "/in_process" + name)) << name;
+  }
+  // The cockpit displays' last pictures.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/dds/pfd.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/dds/nd.png"));
 }
 
 }  // namespace

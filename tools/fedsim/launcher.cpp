@@ -23,6 +23,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -293,16 +294,29 @@ class Progress {
     std::lock_guard lock(mutex_);
     return ran_.count(name) != 0;
   }
-  std::string line() {
+  /// One progress line: the timing federate's frame (and simulated time at `rate_hz`), how
+  /// many members run, the ones that do not by state, then each member's note or fault (the
+  /// flight federate's phase of flight, distance to go and modes).
+  std::string line(double rate_hz) {
     static const char* kState[] = {"starting", "ready", "running", "stopping", "FAILED", "LOST"};
     std::lock_guard lock(mutex_);
     std::ostringstream out;
+    std::uint64_t frame = 0;
+    int running = 0;
+    std::string others, notes;
     for (const auto& [name, s] : latest_) {
-      out << " " << name << "=" << kState[std::min<int>(s.state(), 5)] << "/" << s.frames_done();
-      if (!s.message().to_string().empty() && s.state() != msg::FEDERATE_STOPPING) {
-        out << "(" << s.message().to_string() << ")";
+      frame = std::max<std::uint64_t>(frame, s.frames_done());
+      if (s.state() == msg::FEDERATE_RUNNING) {
+        ++running;
+      } else {
+        others += " " + name + "=" + kState[std::min<int>(s.state(), 5)];
       }
+      const std::string message = s.message().to_string();
+      if (!message.empty() && s.state() != msg::FEDERATE_STOPPING) notes += "\n    " + name + ": " + message;
     }
+    out << " frame " << frame;
+    if (rate_hz > 0) out << " (" << std::fixed << std::setprecision(1) << frame / rate_hz << " s simulated)";
+    out << ", " << running << " running" << others << notes;
     return out.str();
   }
 
@@ -633,7 +647,8 @@ void check_exits(Children& children, Stopper& stopper, bool& failed, bool quiet)
 }
 
 /// Runs the federation until every federate stopped; returns the stop reason.
-std::string supervise(Children& children, const RunOptions& options, Progress& progress, bool& failed) {
+std::string supervise(Children& children, const RunOptions& options, Progress& progress, double rate_hz,
+                      bool& failed) {
   Stopper stopper(children, options.stop_grace_s, options.quiet);
   const std::uint64_t start_ns = util::monotonic_ns();
   const auto period_ns = static_cast<std::uint64_t>(options.progress_period_s * 1e9);
@@ -651,7 +666,7 @@ std::string supervise(Children& children, const RunOptions& options, Progress& p
     if (!stopper.stopping() && period_ns > 0 && now >= next_progress) {
       next_progress += period_ns;
       std::cout << "fedsim run: progress t=" << static_cast<int>((now - start_ns) / 1e9) << "s"
-                << progress.line() << "\n";
+                << progress.line(rate_hz) << "\n";
     }
   }
   return stopper.reason();
@@ -730,7 +745,7 @@ int run_deployment(const RunOptions& options) {
   start_all(p);
   Progress progress(p.dds);
   bool failed = false;
-  const std::string reason = supervise(p.children, options, progress, failed);
+  const std::string reason = supervise(p.children, options, progress, p.d.rate_hz, failed);
 
   std::cout << "fedsim run: all federates stopped (" << reason << ")\n";
   for (const auto& c : p.children) {

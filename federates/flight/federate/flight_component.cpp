@@ -312,6 +312,19 @@ void FlightComponent::on_stop() {
              gate_.second_writer_events());
 }
 
+std::string FlightComponent::progress_note() const {
+  afcs::ApproachAircraft aircraft;
+  aircraft.lat_rad = state_.latitude_rad();
+  aircraft.lon_rad = state_.longitude_rad();
+  aircraft.height_agl_m = state_.height_agl_m();
+  aircraft.cas_mps = state_.air().cas_mps();
+  aircraft.ground_speed_mps = state_.ground_speed_mps();
+  aircraft.on_ground = state_.on_ground();
+  const afcs::ModeState modes = afcs_ ? afcs_->modes() : afcs::ModeState{};
+  return afcs::approach_progress_line(modes, aircraft,
+                                      setup_.progress_runway ? &*setup_.progress_runway : nullptr);
+}
+
 void FlightComponent::write_state(const runtime::FrameContext& frame) {
   if (playback_.active()) {
     state_ = playback_.last();  // the replay, as this aircraft's state of this frame

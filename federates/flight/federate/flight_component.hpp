@@ -34,6 +34,7 @@
 #include "flight/federate/flight_adapter.hpp"
 #include "flight/federate/pilot_input_gate.hpp"
 #include "flight/federate/start_options.hpp"
+#include "flight/model/afcs/approach_progress.hpp"
 #include "flight/model/afcs/model_coupling.hpp"
 
 #include <memory>
@@ -49,6 +50,8 @@ struct FlightSetup {
   int aircraft_id = 0;
   /// Host the AFCS (autopilot, flight director, autothrottle) with these parameters.
   std::optional<afcs::AfcsParameters> autopilot;
+  /// The runway the progress note measures the distance to go to (--airport/--runway starts).
+  std::optional<afcs::RunwayCentreline> progress_runway;
 };
 
 class FlightComponent final : public runtime::Component {
@@ -59,6 +62,8 @@ class FlightComponent final : public runtime::Component {
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
   void on_stop() override;
+  /// Phase of flight, distance to go, height, speed and the FMA (approach_progress.hpp).
+  std::string progress_note() const override;
 
   const AircraftModel& model() const { return *setup_.model; }
   /// The hosted AFCS (nullptr without --autopilot, or before the first RUN frame).

@@ -81,6 +81,11 @@ FlightSetup prepare_flight(const FlightOptions& o) {
   setup.controls_mode = o.controls == "relative" ? ControlsMode::kRelative : ControlsMode::kAbsolute;
   setup.aircraft_id = o.aircraft_id;
   if (o.autopilot) setup.autopilot = afcs::AfcsParameters{};
+  // The runway of an --airport/--runway start: the progress line's distance to go.
+  if (!o.start.airport.empty() && !o.start.runway.empty()) {
+    setup.progress_runway =
+        afcs::RunwayCentreline::from_table(setup.runways, o.start.airport, o.start.runway);
+  }
   return setup;
 }
 

@@ -34,6 +34,7 @@ class StateWriter final : public runtime::Component {
     s.latitude_rad(p.lat_rad);
     s.longitude_rad(p.lon_rad);
     s.altitude_msl_m(nan_next ? std::nan("") : p.alt_msl_m);
+    s.height_agl_m(before_m * std::tan(3.0 * kDegToRad));  // above the runway plane
     s.psi_rad(p.psi_rad);
     s.velocity_ned_mps({70.0 * std::cos(p.psi_rad), 70.0 * std::sin(p.psi_rad), 70.0 * std::tan(3.0 * kDegToRad)});
     s.stamp(stamp_at_start ? frame.stamp() : frame.end_stamp());
@@ -169,6 +170,41 @@ TEST_F(VisualComponentTest, SnapshotsOnCommandButNotFromTheCommandHistory) {
   ASSERT_NE(fault("command_rejected"), nullptr);
   EXPECT_NE(fault("command_rejected")->last.find("[A-Za-z0-9_-]"), std::string::npos);
   EXPECT_EQ(observer_.status.snapshots_written(), 1u);
+}
+
+// The picture at a height (the decision height): drawn in the frame the new state first descends
+// through it, whatever the render rate, and only once; a start below the height captures nothing.
+TEST(VisualCapture, ThePictureAtTheDecisionHeightIsTakenOnceOnTheWayDown) {
+  const std::filesystem::path dir = test::output_dir() / "capture";
+  std::filesystem::create_directories(dir);
+  auto fly = [&](double capture_ft, const std::string& file, int frames) {
+    VisualSetup setup = small_setup(dir.string());
+    setup.render_hz = 0.5;  // one image every 100 frames: the capture must not wait for it
+    setup.capture_agl_m = capture_ft * units::kFtToM;
+    setup.capture_png = (dir / file).string();
+    std::filesystem::remove(setup.capture_png);
+    StateWriter writer;
+    VisualComponent visual("visual", std::move(setup));
+    runtime::Composition composition({});
+    composition.add(writer);
+    composition.add(visual);
+    msg::SimCommand run;
+    run.kind(msg::COMMAND_RUN_STATE);
+    run.run_state(msg::RUN_STATE_RUN);
+    composition.command(run);
+    composition.run(frames);
+    return std::filesystem::exists(dir / file);
+  };
+  // From 318 ft at 3.67 m/s down the 3 deg path, 250 ft is crossed after 5.7 s (frame 285).
+  EXPECT_FALSE(fly(250.0, "dh_early.png", 250));
+  EXPECT_TRUE(fly(250.0, "dh.png", 300));
+  const Image at_250 = read_png((dir / "dh.png").string());
+  EXPECT_EQ(at_250.width_px, 160);
+  // Negative control: a height above the start is never descended through.
+  EXPECT_FALSE(fly(400.0, "dh_never.png", 300));
+  // Another height, another picture (the runway is nearer).
+  EXPECT_TRUE(fly(200.0, "dh_200.png", 600));
+  EXPECT_NE(read_png((dir / "dh_200.png").string()).rgba, at_250.rgba);
 }
 
 TEST_F(VisualComponentTest, PicturesAreJpegsOfTheChannel) {
