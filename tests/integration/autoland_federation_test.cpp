@@ -93,6 +93,10 @@ TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
     const std::string name = std::string("/dh_") + channel + ".png";
     EXPECT_TRUE(read_file(dir + "/dds" + name) == read_file(dir + "/in_process" + name)) << name;
   }
+  // The QTG report of the run (the last after-step: the recording against the autoland criteria;
+  // a failed check would have failed the run).
+  EXPECT_TRUE(std::filesystem::exists(dir + "/dds/qtg/qtg_report.html"));
+  EXPECT_NE(read_file(dir + "/dds/qtg/qtg_report.html").find("1 of 1 tests passed"), std::string::npos);
   // The cockpit displays' last pictures.
   EXPECT_TRUE(std::filesystem::exists(dir + "/dds/pfd.png"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/dds/nd.png"));

@@ -1,6 +1,8 @@
 #include "tools/qtg/channels.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -9,6 +11,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include "common/airports/runway_table.hpp"
 #include "common/csv/csv_reader.hpp"
 
 namespace fedsim::qtg {
@@ -61,6 +66,33 @@ const std::vector<Derivation>& derivations() {
        [](V v) { return v[0] * kDegPerRad; }},
       {{"thrust_lbf", "total thrust"}, {"total_thrust_n"}, [](V v) { return v[0] / kNPerLbf; }},
       {{"on_ground", "1 while any gear carries weight"}, {"on_ground"}, [](V v) { return v[0]; }},
+      {{"sink_rate_fps", "CG rate of descent (+ down)"}, {"climb_rate_mps"},
+       [](V v) { return -v[0] / kMPerFt; }},
+  };
+  return table;
+}
+
+// ILS deviations in dots: the recorded deviation is -1..1 of full scale (150 uA, DDM 0.155
+// localizer / 0.175 glide slope, federates/nav/model/radio) and full scale is two dots on the
+// 737's PFD and on a standard CDI (one dot 75 uA: DDM 0.0775 localizer, 0.0875 glide slope).
+constexpr double kDotsPerFullScale = 2.0;
+
+const std::vector<ChannelInfo>& federation_channels() {
+  using S = ChannelSource;
+  static const std::vector<ChannelInfo> table = {
+      {"loc_dots", "NAV1 localizer deviation, dots (+ fly right; only while the localizer is received)",
+       S::navigation_state},
+      {"gs_dots", "NAV1 glide-slope deviation, dots (+ fly up; only while the glide slope is received)",
+       S::navigation_state},
+      {"ap_engaged", "1 while the autopilot is engaged (CMD)", S::autopilot_state},
+      {"ap_roll_mode", "FMA roll mode (idl/autopilot.idl FmaRollMode: 5 VOR/LOC, 6 ALIGN, 7 ROLLOUT)",
+       S::autopilot_state},
+      {"ap_pitch_mode", "FMA pitch mode (FmaPitchMode: 6 G/S, 7 FLARE, 8 ROLLOUT)", S::autopilot_state},
+      {"height_above_runway_ft", "CG height above the runway threshold's elevation", S::runway},
+      {"beyond_threshold_ft", "distance beyond the runway threshold along the centreline (- before it)",
+       S::runway},
+      {"left_of_centreline_ft", "distance left of the runway centreline, seen landing (- right)",
+       S::runway},
   };
   return table;
 }
@@ -72,9 +104,24 @@ const std::vector<ChannelInfo>& known_channels() {
     std::vector<ChannelInfo> out;
     for (const auto& d : derivations()) out.push_back(d.info);
     out.push_back({"distance_ft", "horizontal distance from the start point"});
+    for (const auto& c : federation_channels()) out.push_back(c);
     return out;
   }();
   return infos;
+}
+
+ChannelSource channel_source(const std::string& name) {
+  for (const auto& c : known_channels())
+    if (c.name == name) return c.source;
+  return ChannelSource::aircraft_state;
+}
+
+std::string source_file(ChannelSource source) {
+  switch (source) {
+    case ChannelSource::navigation_state: return "fedsim_navigation_state.csv";
+    case ChannelSource::autopilot_state: return "fedsim_autopilot_state.csv";
+    default: return "fedsim_aircraft_state.csv";
+  }
 }
 
 bool is_known_channel(const std::string& name) {
@@ -83,15 +130,24 @@ bool is_known_channel(const std::string& name) {
 }
 
 std::string channel_unit(const std::string& name) {
-  static const std::set<std::string> units = {"kt", "ft", "deg", "dps", "fpm", "g",
-                                              "s",  "m",  "lbf", "n"};
+  static const std::set<std::string> units = {"kt", "ft", "deg", "dps", "fpm",  "g",
+                                              "s",  "m",  "lbf", "n",   "dots", "fps"};
   const auto underscore = name.rfind('_');
   if (underscore == std::string::npos) return "1";
   const std::string suffix = name.substr(underscore + 1);
   return units.count(suffix) ? suffix : "1";
 }
 
-Channels channels_from_state_csv(const std::string& path) {
+namespace {
+
+void append(Channels& out, const std::string& name, double t, double x) {
+  auto& s = out[name];
+  s.t.push_back(t);
+  s.x.push_back(x);
+}
+
+/// The aircraft-state channels, and with `runway` the runway channels, in one pass.
+Channels read_aircraft_state(const std::string& path, const RunwayFrame* runway) {
   auto reader = csv::CsvReader::open(path);
   const auto time_col = reader.column("sim_time_s");
   std::vector<std::vector<std::size_t>> cols;
@@ -100,6 +156,12 @@ Channels channels_from_state_csv(const std::string& path) {
     for (const auto& c : d.columns) idx.push_back(reader.column(c));
     cols.push_back(std::move(idx));
   }
+  std::size_t lat_col = 0, lon_col = 0, alt_col = 0;
+  if (runway) {
+    lat_col = reader.column("latitude_rad");
+    lon_col = reader.column("longitude_rad");
+    alt_col = reader.column("altitude_msl_m");
+  }
   Channels out;
   csv::CsvRow row;
   std::vector<double> args;
@@ -107,21 +169,158 @@ Channels channels_from_state_csv(const std::string& path) {
   bool first = true;
   while (reader.next(row)) {
     const double t = row.number(time_col);
+    if (!out.empty() && t < out.begin()->second.t.back())
+      row.fail("column 'sim_time_s': time goes backwards");
     for (std::size_t i = 0; i < derivations().size(); ++i) {
       args.clear();
       for (auto c : cols[i]) args.push_back(row.number(c));
-      auto& s = out[derivations()[i].info.name];
-      s.t.push_back(t);
-      s.x.push_back(derivations()[i].value(args));
+      append(out, derivations()[i].info.name, t, derivations()[i].value(args));
     }
     const double n = out["north_ft"].x.back(), e = out["east_ft"].x.back();
     if (first) north0 = n, east0 = e, first = false;
-    auto& d = out["distance_ft"];
-    d.t.push_back(t);
-    d.x.push_back(std::hypot(n - north0, e - east0));
+    append(out, "distance_ft", t, std::hypot(n - north0, e - east0));
+    if (runway) {
+      const double lat = row.number(lat_col), lon = row.number(lon_col);
+      append(out, "height_above_runway_ft", t, (row.number(alt_col) - runway->elevation_m()) / kMPerFt);
+      append(out, "beyond_threshold_ft", t, runway->beyond_threshold_m(lat, lon) / kMPerFt);
+      append(out, "left_of_centreline_ft", t, runway->left_of_centreline_m(lat, lon) / kMPerFt);
+    }
   }
   if (first) throw csv::CsvError(path, 0, "no data rows");
   return out;
+}
+
+/// NAV1's localizer and glide-slope deviations in dots, each only while its signal is valid
+/// (SignalStatus SIGNAL_VALID = 0, idl/navigation.idl).
+std::vector<double> read_navigation_state(const std::string& path, Channels& out) {
+  auto reader = csv::CsvReader::open(path);
+  const auto t_col = reader.column("sim_time_s");
+  const auto loc = reader.column("nav[0].course_deviation");
+  const auto loc_status = reader.column("nav[0].status");
+  const auto gs = reader.column("nav[0].glideslope_deviation");
+  const auto gs_status = reader.column("nav[0].glideslope_status");
+  out["loc_dots"], out["gs_dots"];  // present (perhaps empty: never received)
+  csv::CsvRow row;
+  std::vector<double> times;
+  while (reader.next(row)) {
+    const double t = row.number(t_col);
+    times.push_back(t);
+    if (row.number(loc_status) == 0) append(out, "loc_dots", t, kDotsPerFullScale * row.number(loc));
+    if (row.number(gs_status) == 0) append(out, "gs_dots", t, kDotsPerFullScale * row.number(gs));
+  }
+  if (times.empty()) throw csv::CsvError(path, 0, "no data rows");
+  return times;
+}
+
+std::vector<double> read_autopilot_state(const std::string& path, Channels& out) {
+  auto reader = csv::CsvReader::open(path);
+  const auto t_col = reader.column("sim_time_s");
+  const auto engaged = reader.column("fma.autopilot_engaged");
+  const auto roll = reader.column("fma.roll");
+  const auto pitch = reader.column("fma.pitch");
+  csv::CsvRow row;
+  std::vector<double> times;
+  while (reader.next(row)) {
+    const double t = row.number(t_col);
+    times.push_back(t);
+    append(out, "ap_engaged", t, row.number(engaged));
+    append(out, "ap_roll_mode", t, row.number(roll));
+    append(out, "ap_pitch_mode", t, row.number(pitch));
+  }
+  if (times.empty()) throw csv::CsvError(path, 0, "no data rows");
+  return times;
+}
+
+}  // namespace
+
+Channels channels_from_state_csv(const std::string& path) { return read_aircraft_state(path, nullptr); }
+
+Channels channels_from_recording(const std::string& dir, const std::set<ChannelSource>& sources,
+                                 const std::optional<RunwaySpec>& runway,
+                                 std::vector<RecordedFile>* files) {
+  namespace fs = std::filesystem;
+  const auto file = [&](ChannelSource s) {
+    const std::string path = (fs::path(dir) / source_file(s)).string();
+    if (!fs::is_regular_file(path))
+      throw std::runtime_error(path + ": missing: the recording has no " + source_file(s) +
+                               " (record its topic: fedsim record --topics ...)");
+    return path;
+  };
+  std::optional<RunwayFrame> frame;
+  if (sources.count(ChannelSource::runway)) {
+    if (!runway) throw std::runtime_error("the runway channels need the test's runway");
+    frame.emplace(*runway);
+  }
+  const std::string state = file(ChannelSource::aircraft_state);
+  Channels out = read_aircraft_state(state, frame ? &*frame : nullptr);
+  if (files) files->push_back({state, out.at("tas_kt").t});
+  if (sources.count(ChannelSource::navigation_state)) {
+    const std::string path = file(ChannelSource::navigation_state);
+    auto times = read_navigation_state(path, out);
+    if (files) files->push_back({path, std::move(times)});
+  }
+  if (sources.count(ChannelSource::autopilot_state)) {
+    const std::string path = file(ChannelSource::autopilot_state);
+    auto times = read_autopilot_state(path, out);
+    if (files) files->push_back({path, std::move(times)});
+  }
+  return out;
+}
+
+std::string reciprocal_runway(const std::string& designator) {
+  std::size_t digits = 0;
+  while (digits < designator.size() && std::isdigit(static_cast<unsigned char>(designator[digits])))
+    ++digits;
+  const std::string suffix = designator.substr(digits);
+  if (digits == 0 || digits > 2 || suffix.size() > 1 ||
+      (suffix.size() == 1 && std::string("LCR").find(suffix) == std::string::npos))
+    throw std::invalid_argument("runway '" + designator + "': not a designator such as 28R");
+  const int number = std::stoi(designator.substr(0, digits));
+  if (number < 1 || number > 36)
+    throw std::invalid_argument("runway '" + designator + "': the number must be 1..36");
+  const int other = (number + 18 - 1) % 36 + 1;
+  const std::string side = suffix == "L" ? "R" : suffix == "R" ? "L" : suffix;
+  return std::to_string(other) + side;
+}
+
+RunwayFrame::RunwayFrame(const RunwaySpec& spec) {
+  const RunwayTable table = RunwayTable::load_default();
+  const RunwayEnd landing = table.at(spec.airport, spec.runway);
+  // the table may spell a one-digit end 1L or 01L: try both
+  const std::string far_name = reciprocal_runway(spec.runway);
+  auto far = table.find(spec.airport, far_name);
+  const bool one_digit = far_name.size() == 1 || !std::isdigit(static_cast<unsigned char>(far_name[1]));
+  if (!far && one_digit) far = table.find(spec.airport, "0" + far_name);
+  if (!far)
+    throw std::invalid_argument(spec.airport + " " + spec.runway + ": no opposite end " + far_name +
+                                " in the runway table (the centreline needs both ends)");
+  lat0_deg_ = landing.threshold_lat_rad * 180.0 / M_PI;
+  lon0_deg_ = landing.threshold_lon_rad * 180.0 / M_PI;
+  elevation_m_ = landing.elevation_m;
+  double east = 0, north = 0;
+  plane(far->threshold_lat_rad, far->threshold_lon_rad, east, north);
+  length_m_ = std::hypot(east, north);
+  if (!(length_m_ > 1.0)) throw std::invalid_argument(spec.airport + " " + spec.runway + ": the two ends coincide");
+  along_east_ = east / length_m_;
+  along_north_ = north / length_m_;
+}
+
+void RunwayFrame::plane(double lat_rad, double lon_rad, double& east_m, double& north_m) const {
+  const GeographicLib::LocalCartesian local(lat0_deg_, lon0_deg_, 0.0);
+  double up = 0;
+  local.Forward(lat_rad * 180.0 / M_PI, lon_rad * 180.0 / M_PI, 0.0, east_m, north_m, up);
+}
+
+double RunwayFrame::beyond_threshold_m(double lat_rad, double lon_rad) const {
+  double e = 0, n = 0;
+  plane(lat_rad, lon_rad, e, n);
+  return e * along_east_ + n * along_north_;
+}
+
+double RunwayFrame::left_of_centreline_m(double lat_rad, double lon_rad) const {
+  double e = 0, n = 0;
+  plane(lat_rad, lon_rad, e, n);
+  return -e * along_north_ + n * along_east_;  // the landing direction turned 90 deg left
 }
 
 Series read_reference_column(const std::string& path, const std::string& column) {

@@ -1,11 +1,16 @@
 // The channels a QTG test compares: named quantities with their unit in the name (tas_kt,
-// pitch_deg, ...), derived from the aircraft-state CSV that fedsim-fly records, and read from a
+// pitch_deg, ...), derived from the aircraft-state CSV that fedsim-fly records (and, for a
+// federation test, the navigation and autopilot state and the runway), and read from a
 // reference CSV whose headers use the same names (time_s first).
 #pragma once
 
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 #include <map>
+
+#include "tools/qtg/qtg_test.hpp"
 
 namespace fedsim::qtg {
 
@@ -18,20 +23,70 @@ struct Series {
 /// Channel name -> series.
 using Channels = std::map<std::string, Series>;
 
+/// Where a channel comes from: a recorded topic's CSV, or the aircraft state measured from the
+/// test's runway.
+enum class ChannelSource { aircraft_state, navigation_state, autopilot_state, runway };
+
 struct ChannelInfo {
   std::string name;
   std::string meaning;
+  ChannelSource source = ChannelSource::aircraft_state;
 };
 
 /// Every channel a test may name, in report order.
 const std::vector<ChannelInfo>& known_channels();
 bool is_known_channel(const std::string& name);
 /// The unit in a channel's name: the suffix after the last '_' when it is a unit fedsim uses
-/// (kt, ft, deg, dps, fpm, g, s, m, lbf, n), otherwise "1" (normalised or dimensionless).
+/// (kt, ft, deg, dps, fpm, g, s, m, lbf, n, dots, fps), otherwise "1" (normalised or
+/// dimensionless).
 std::string channel_unit(const std::string& name);
 
-/// Reads fedsim-fly's fedsim_aircraft_state.csv into every known channel; throws csv::CsvError.
+/// The source of a known channel (aircraft_state for an unknown name).
+ChannelSource channel_source(const std::string& name);
+/// The recording's file of a source: fedsim_aircraft_state.csv, fedsim_navigation_state.csv,
+/// fedsim_autopilot_state.csv (the runway channels read the aircraft state).
+std::string source_file(ChannelSource source);
+
+/// Reads fedsim-fly's fedsim_aircraft_state.csv into every aircraft-state channel; throws
+/// csv::CsvError.
 Channels channels_from_state_csv(const std::string& path);
+
+/// Reads a recording folder (fedsim-fly's, or a `fedsim record` member's of a `fedsim run`):
+/// the aircraft state always, the navigation and autopilot state when `sources` has them, the
+/// runway channels when it has `runway` (then `runway` must be given). Throws
+/// std::runtime_error naming the file that is missing or bad, or the runway not in the table.
+/// `files`, when given, receives each file read with its sample times (to check the recording
+/// covers the run).
+struct RecordedFile {
+  std::string path;
+  std::vector<double> t;
+};
+Channels channels_from_recording(const std::string& dir, const std::set<ChannelSource>& sources,
+                                 const std::optional<RunwaySpec>& runway,
+                                 std::vector<RecordedFile>* files = nullptr);
+
+/// The landing runway and its far end: distances along and across its centreline, in the
+/// local tangent plane at the landing threshold (as fedsim-autoland-mc measures them).
+class RunwayFrame {
+ public:
+  /// Looks the runway and its reciprocal (28R -> 10L) up in data/nav/runways.csv; throws
+  /// std::invalid_argument naming what is missing.
+  explicit RunwayFrame(const RunwaySpec& spec);
+  double beyond_threshold_m(double lat_rad, double lon_rad) const;
+  double left_of_centreline_m(double lat_rad, double lon_rad) const;  // seen landing
+  double elevation_m() const { return elevation_m_; }
+  double length_m() const { return length_m_; }  // threshold to the far end's threshold
+
+ private:
+  void plane(double lat_rad, double lon_rad, double& east_m, double& north_m) const;
+  double lat0_deg_ = 0, lon0_deg_ = 0, elevation_m_ = 0;
+  double along_east_ = 0, along_north_ = 0, length_m_ = 0;
+};
+
+/// The designator of a runway's other end, without a leading zero: 28R -> 10L, 01 -> 19,
+/// 9C -> 27C, 19R -> 1L; throws
+/// std::invalid_argument for a designator that is not 1..36 with an optional L, C or R.
+std::string reciprocal_runway(const std::string& designator);
 
 /// One column of a reference CSV against its time_s column (units in the headers: a column must
 /// be a known channel name). Throws csv::CsvError "file:line: column 'x': problem".

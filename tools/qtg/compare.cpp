@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "common/csv/csv_reader.hpp"
@@ -9,8 +10,30 @@
 namespace fedsim::qtg {
 namespace {
 
-/// Scores a derived value against its reference.
+/// Scores a value against its limits: the ratio is the distance from the middle of the range
+/// over half the range, or for an upper limit alone the share of it used; the excursion is
+/// how far beyond the nearer limit it lies (negative: inside, by that much).
+void score_limits(CheckResult& r, double measured, double t) {
+  const Check& c = r.check;
+  const double hi = *c.limit_max;
+  r.measured = measured;
+  r.worst_time_s = t;
+  if (c.limit_min) {
+    const double lo = *c.limit_min;
+    r.band = 0.5 * (hi - lo);
+    r.worst_ratio = std::fabs(measured - 0.5 * (lo + hi)) / r.band;
+    r.worst_excursion = std::max(measured - hi, lo - measured);
+  } else {
+    r.band = hi;
+    r.worst_ratio = std::max(measured, 0.0) / hi;
+    r.worst_excursion = measured - hi;
+  }
+  r.passed = std::isfinite(measured) && measured <= hi && (!c.limit_min || measured >= *c.limit_min);
+}
+
+/// Scores a derived value against its reference (or its limits).
 void score(CheckResult& r, double measured, double t) {
+  if (r.check.is_limit()) return score_limits(r, measured, t);
   r.measured = measured;
   r.band = r.check.tolerance.band(*r.reference);
   r.worst_excursion = measured - *r.reference;
@@ -48,6 +71,28 @@ void compare_time_history(CheckResult& r, double from, double to) {
   r.passed = r.worst_ratio <= 1.0;
 }
 
+/// The samples of `s` where the condition's channel lies within [min, max]; sets `problem`
+/// (and returns nothing) when that channel was not recorded.
+Series where(const Series& s, const Condition& c, const Channels& flown, std::string& problem) {
+  const auto it = flown.find(c.channel);
+  if (it == flown.end() || it->second.empty()) {
+    problem = "channel " + c.channel + " (the while condition) was not recorded";
+    return {};
+  }
+  Series out;
+  for (std::size_t i = 0; i < s.t.size(); ++i) {
+    const double v = interpolate(it->second, s.t[i]);
+    if (v >= c.min && v <= c.max) out.t.push_back(s.t[i]), out.x.push_back(s.x[i]);
+  }
+  return out;
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 }  // namespace
 
 bool TestResult::passed() const {
@@ -67,6 +112,16 @@ CheckResult evaluate_check(const Check& check, const Channels& flown, const Seri
     return r;
   }
   r.simulated = it->second;
+  if (check.while_condition) {
+    const Condition& w = *check.while_condition;
+    r.simulated = where(it->second, w, flown, r.problem);
+    if (!r.problem.empty()) return r;
+    if (r.simulated.empty()) {
+      r.problem = "no sample while " + w.channel + " is within " + number_text(w.min) + ".." +
+                  number_text(w.max);
+      return r;
+    }
+  }
   const double from = check.from_s;
   const double to = check.to_s.value_or(duration_s + 1e-9);
   r.reference = check.reference_value;
@@ -135,6 +190,18 @@ CheckResult evaluate_check(const Check& check, const Channels& flown, const Seri
       }
       r.marks = {{e->t, e->x, check.measure == Measure::maximum}};
       score(r, e->x, e->t);
+      return r;
+    }
+    case Measure::max_abs: {
+      const auto hi = window_max(r.simulated, from, to), lo = window_min(r.simulated, from, to);
+      if (!hi || !lo) {
+        r.problem = "no sample in the window";
+        return r;
+      }
+      const Extreme e = std::fabs(lo->x) > std::fabs(hi->x) ? *lo : *hi;
+      for (double& x : r.simulated.x) x = std::fabs(x);  // plotted as compared: |channel|
+      r.marks = {{e.t, std::fabs(e.x), true}};
+      score(r, std::fabs(e.x), e.t);
       return r;
     }
   }

@@ -37,11 +37,12 @@ CheckResult evaluate_check(const Check& check, const Channels& flown, const Seri
 
 struct TestResult {
   QtgTest test;
-  bool ran = false;       // fedsim-fly flew it
+  bool ran = false;       // fedsim-fly or the federation flew it (or its recording was read)
   std::string problem;    // why it did not run (exit code and message)
   std::vector<CheckResult> checks;
   double wall_s = 0;
-  std::string out_dir;
+  std::string out_dir;         // the recording's folder
+  bool from_recording = false;  // evaluated from an existing recording (--recording), not flown
   bool passed() const;
 };
 

@@ -1,6 +1,8 @@
 // fedsim-qtg: runs the Qualification Test Guide (data/qtg by default) and writes one report.
-// Every test is flown by fedsim-fly (a child process, arguments built from the validated test
-// file), compared with its reference within Part 60 tolerances; exit 0 only if all passed.
+// Every test is flown by fedsim-fly, or (a federation test) by `fedsim run DEPLOYMENT
+// --in-process` (child processes, arguments built from the validated test file), compared with
+// its reference within Part 60 tolerances or its limits; exit 0 only if all passed. With
+// --recording DIR the named tests are evaluated on a `fedsim run`'s recording instead of flown.
 // Usage and format: docs/qtg.md, data/qtg/README.md.
 #include <unistd.h>
 
@@ -83,6 +85,8 @@ int main(int argc, char** argv) {
   std::string tests_dir = std::string(FEDSIM_SOURCE_DIR) + "/data/qtg";
   std::vector<std::string> only;
   std::string fly = own_folder() + "/fedsim-fly";
+  std::string fedsim = own_folder() + "/fedsim";
+  std::string recording;
   std::string pdf_mode = "auto";
   bool record = false;
   int record_every = 1;
@@ -90,22 +94,43 @@ int main(int argc, char** argv) {
   app.add_option("--tests", tests_dir, "folder of test files (*.yaml, searched recursively)");
   app.add_option("--only", only, "run only the test(s) of this name (file stem); repeatable");
   app.add_option("--fly", fly, "the fedsim-fly program")->check(CLI::ExistingFile);
+  app.add_option("--fedsim", fedsim, "the fedsim program (runs the federation tests in-process)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--recording", recording,
+                 "evaluate the --only test(s) on this recording (a fedsim run's --out folder: "
+                 "fedsim_aircraft_state.csv, ...) instead of flying them")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--pdf", pdf_mode, "print the report to PDF with headless chromium")
       ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_flag("--record-regression", record,
                "write the time-history reference of every regression test from this run "
                "(then review and commit it: it is fedsim's own output, not flight data)");
   app.add_option("--record-every", record_every, "record every Nth frame")->check(CLI::Range(1, 1000));
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help or the problem
+    return rc == 0 ? 0 : 2;      // a bad option (a missing --recording folder) is exit 2
+  }
+  if (!recording.empty() && only.empty()) {
+    std::cerr << "qtg: --recording needs --only NAME (the test whose run it recorded)\n";
+    return 2;
+  }
+  if (!recording.empty() && record) {
+    std::cerr << "qtg: --record-regression flies the tests; it does not go with --recording\n";
+    return 2;
+  }
 
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<QtgTest> tests;
   int load_errors = 0;
   std::vector<TestResult> results;
   try {
+    // profiles, then deployments and scenarios named from the source tree (deploy/..., data/...)
     const std::vector<std::string> search = {tests_dir + "/profiles",
                                              std::string(FEDSIM_SOURCE_DIR) + "/data/qtg/profiles",
-                                             std::string(FEDSIM_SOURCE_DIR) + "/data/profiles"};
+                                             std::string(FEDSIM_SOURCE_DIR) + "/data/profiles",
+                                             std::string(FEDSIM_SOURCE_DIR)};
     for (const auto& path : find_tests(tests_dir)) {
       const std::string stem = fs::path(path).stem().string();
       if (!only.empty() && std::find(only.begin(), only.end(), stem) == only.end()) continue;
@@ -139,24 +164,38 @@ int main(int argc, char** argv) {
     std::cerr << "qtg: no tests in " << tests_dir << '\n';
     return 2;
   }
-  fs::create_directories(out_dir + "/runs");
+  fs::create_directories(recording.empty() ? out_dir + "/runs" : out_dir);
   const std::size_t total = tests.size();
   for (std::size_t i = 0; i < total; ++i) {
     const auto& t = tests[i];
     std::cerr << "qtg: [" << i + 1 << '/' << total << "] " << t.name << " (" << t.aircraft << ", "
-              << t.duration_s << " s) ..." << std::flush;
-    TestResult r = run_test(t, fly, out_dir + "/runs/" + t.name);
+              << t.duration_s << " s" << (recording.empty() ? "" : ", from the recording " + recording)
+              << ") ..." << std::flush;
+    TestResult r;
+    if (recording.empty()) {
+      r = run_test(t, {fly, fedsim}, out_dir + "/runs/" + t.name);
+    } else {
+      r = evaluate_recording(t, recording);
+      r.from_recording = true;
+    }
     std::cerr << (r.passed() ? " PASS" : " FAIL") << " (" << std::fixed << std::setprecision(2)
               << r.wall_s << " s)" << std::defaultfloat << std::setprecision(6) << '\n';
     if (!r.ran) std::cerr << "qtg:   " << r.problem << '\n';
     for (const auto& c : r.checks) {
       if (c.passed) continue;
-      std::cerr << "qtg:   " << c.check.name << ": "
-                << (c.problem.empty() ? "worst excursion " + std::to_string(c.worst_excursion) +
-                                            " at " + std::to_string(c.worst_time_s) + " s (" +
-                                            std::to_string(100 * c.worst_ratio) + " % of tolerance)"
-                                      : c.problem)
-                << '\n';
+      std::cerr << "qtg:   " << c.check.name << ": ";
+      if (!c.problem.empty()) {
+        std::cerr << c.problem << '\n';
+      } else if (c.check.is_limit()) {
+        const std::string unit = measure_unit(c.check) == "1" ? "" : " " + measure_unit(c.check);
+        std::cerr << "measured " << *c.measured << unit << " at " << c.worst_time_s << " s, outside ";
+        if (c.check.limit_min) std::cerr << *c.check.limit_min << " .. ";
+        else std::cerr << "at most ";
+        std::cerr << *c.check.limit_max << unit << " by " << c.worst_excursion << unit << '\n';
+      } else {
+        std::cerr << "worst excursion " << c.worst_excursion << " at " << c.worst_time_s << " s ("
+                  << 100 * c.worst_ratio << " % of tolerance)\n";
+      }
     }
     if (record && r.ran) {
       if (t.reference.kind == "regression") {

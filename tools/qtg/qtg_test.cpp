@@ -33,6 +33,7 @@ std::string measure_name(Measure m) {
     case Measure::value_when: return "value_when";
     case Measure::minimum: return "minimum";
     case Measure::maximum: return "maximum";
+    case Measure::max_abs: return "max_abs";
   }
   return "?";
 }
@@ -50,7 +51,7 @@ namespace {
 
 const std::vector<std::string> kMeasures = {"time_history", "period",     "damping_ratio",
                                             "time_to",      "value_at",   "value_when",
-                                            "minimum",      "maximum"};
+                                            "minimum",      "maximum",    "max_abs"};
 
 Measure parse_measure(const std::string& s) {
   for (std::size_t i = 0; i < kMeasures.size(); ++i)
@@ -65,6 +66,20 @@ std::string known_channel(const ConfigNode& node, const std::string& key) {
     for (const auto& c : known_channels()) list += (list.empty() ? "" : ", ") + c.name;
     node.fail_at(key, "unknown channel '" + name + "' (channels: " + list + ")");
   }
+  return name;
+}
+
+/// A channel the test's run records: navigation and autopilot state only in a federation test,
+/// the runway channels only with `runway:`.
+std::string recorded_channel(const ConfigNode& node, const std::string& key, const QtgTest& test) {
+  const std::string name = known_channel(node, key);
+  const ChannelSource source = channel_source(name);
+  if (!test.federation && (source == ChannelSource::navigation_state ||
+                           source == ChannelSource::autopilot_state))
+    node.fail_at(key, "channel '" + name + "' is recorded by a federation test only (" +
+                          source_file(source) + "; fedsim-fly records the aircraft state)");
+  if (source == ChannelSource::runway && !test.runway)
+    node.fail_at(key, "channel '" + name + "' is measured from the runway: give runway: {airport, runway}");
   return name;
 }
 
@@ -130,14 +145,43 @@ Tolerance parse_tolerance(const ConfigNode& n, const std::string& unit) {
   return t;
 }
 
+Condition parse_condition(const ConfigNode& n, const QtgTest& test) {
+  n.reject_unknown_keys({"channel", "min", "max"});
+  Condition w;
+  w.channel = recorded_channel(n, "channel", test);
+  w.min = n.number("min");
+  w.max = n.number("max");
+  if (!(w.max > w.min)) n.fail_at("max", "must be above min");
+  return w;
+}
+
+/// limits: {max, [min,] unit}. A one-sided limit is an upper one above zero (its share used is
+/// what the report shows: 2.6 of 6 ft/s is 43 %).
+void parse_limits(const ConfigNode& n, Check& c) {
+  n.reject_unknown_keys({"min", "max", "unit"});
+  c.limit_max = n.number("max");
+  if (n.has("min")) {
+    c.limit_min = n.number("min");
+    if (!(*c.limit_max > *c.limit_min)) n.fail_at("max", "must be above min");
+  } else if (!(*c.limit_max > 0)) {
+    n.fail_at("max", "a limit without min must be above 0 (give min for a range)");
+  }
+  const std::string unit = measure_unit(c);
+  if (n.string("unit") != unit)
+    n.fail_at("unit", "'" + n.string("unit") + "' but the compared quantity is in '" + unit +
+                          "' (\"1\" for dimensionless)");
+  c.tolerance.kind = Tolerance::Kind::absolute;
+  c.tolerance.unit = unit;
+}
+
 Check parse_check(const ConfigNode& n, const QtgTest& test) {
   n.reject_unknown_keys({"name", "channel", "measure", "from_s", "to_s", "at_s", "threshold",
                          "when_channel", "reference_value", "reference_formula",
-                         "reference_column", "tolerance"});
+                         "reference_column", "tolerance", "limits", "while"});
   Check c;
   c.line = n.line();
   c.name = n.string("name");
-  c.channel = known_channel(n, "channel");
+  c.channel = recorded_channel(n, "channel", test);
   c.measure = parse_measure(n.choice("measure", kMeasures));
   c.from_s = n.number_or("from_s", 0, 0, test.duration_s);
   if (n.has("to_s")) {
@@ -156,7 +200,19 @@ Check parse_check(const ConfigNode& n, const QtgTest& test) {
   needs("threshold", crossing);
   if (crossing) c.threshold = n.number("threshold");
   needs("when_channel", c.measure == Measure::value_when);
-  if (c.measure == Measure::value_when) c.when_channel = known_channel(n, "when_channel");
+  if (c.measure == Measure::value_when) c.when_channel = recorded_channel(n, "when_channel", test);
+  if (n.has("while")) {
+    if (c.measure != Measure::minimum && c.measure != Measure::maximum && c.measure != Measure::max_abs)
+      n.fail_at("while", "only for the measures minimum, maximum and max_abs");
+    c.while_condition = parse_condition(n.child("while"), test);
+  }
+  if (n.has("limits")) {
+    if (c.measure == Measure::time_history) n.fail_at("limits", "not for a time_history check");
+    for (const char* k : {"reference_value", "reference_formula", "tolerance", "reference_column"})
+      if (n.has(k)) n.fail_at(k, "a check has either limits or a reference and tolerance");
+    parse_limits(n.child("limits"), c);
+    return c;
+  }
   if (c.measure == Measure::time_history) {
     needs("reference_value", false);
     needs("reference_formula", false);
@@ -190,7 +246,8 @@ Check parse_check(const ConfigNode& n, const QtgTest& test) {
 QtgTest load_test(const std::string& path, const std::vector<std::string>& search_dirs) {
   const ConfigNode root = ConfigNode::load_file(path);
   root.reject_unknown_keys({"fedsim_qtg_test", "title", "part60_item", "aircraft", "start",
-                            "inputs", "duration_s", "rate_hz", "reference", "checks"});
+                            "inputs", "federation", "runway", "duration_s", "rate_hz", "reference",
+                            "checks"});
   if (root.integer("fedsim_qtg_test", 1, 1) != 1) root.fail("unsupported format version");
   const fs::path base = fs::path(path).parent_path();
   QtgTest t;
@@ -201,7 +258,29 @@ QtgTest load_test(const std::string& path, const std::vector<std::string>& searc
   t.aircraft = root.string("aircraft");
   if (t.aircraft.empty() || t.aircraft.find_first_of(" \t/\\") != std::string::npos)
     root.fail_at("aircraft", "a pack name such as c172 or b737");
-  t.start = parse_start(root.child("start"));
+  if (root.has("federation")) {
+    for (const char* k : {"start", "inputs"})
+      if (root.has(k)) root.fail_at(k, "a federation test starts as its deployment says (no start or inputs)");
+    const ConfigNode f = root.child("federation");
+    f.reject_unknown_keys({"deployment", "scenario"});
+    Federation fed;
+    fed.deployment = resolve(f, "deployment", base, search_dirs);
+    if (f.has("scenario")) fed.scenario = resolve(f, "scenario", base, search_dirs);
+    t.federation = fed;
+  } else {
+    t.start = parse_start(root.child("start"));
+  }
+  if (root.has("runway")) {
+    const ConfigNode r = root.child("runway");
+    r.reject_unknown_keys({"airport", "runway"});
+    RunwaySpec spec{r.string("airport"), r.string("runway")};
+    try {
+      RunwayFrame frame(spec);  // both ends in the table, now rather than after the flight
+    } catch (const std::exception& e) {
+      r.fail(e.what());
+    }
+    t.runway = spec;
+  }
   if (root.has("inputs")) {
     const ConfigNode in = root.child("inputs");
     in.reject_unknown_keys({"profile", "relative"});
@@ -213,7 +292,7 @@ QtgTest load_test(const std::string& path, const std::vector<std::string>& searc
   if (t.duration_s * t.rate_hz > 1e6) root.fail_at("rate_hz", "more than a million frames");
   const ConfigNode ref = root.child("reference");
   ref.reject_unknown_keys({"kind", "source", "file"});
-  t.reference.kind = ref.choice("kind", {"handbook", "analytic", "regression", "flight_test"});
+  t.reference.kind = ref.choice("kind", {"handbook", "analytic", "criteria", "regression", "flight_test"});
   t.reference.source = ref.string("source");
   if (t.reference.source.size() < 10) ref.fail_at("source", "name the source (what and where)");
   // not required to exist: a missing file fails its checks by name (and --record-regression

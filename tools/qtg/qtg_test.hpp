@@ -1,6 +1,8 @@
-// A QTG test as a validated value: what to fly (aircraft, start, input profile, duration, rate),
-// what the reference is (handbook, analytic or fedsim's own regression run) and which channels to
-// compare within which Part 60 tolerance. Format: data/qtg/README.md.
+// A QTG test as a validated value: what to fly (aircraft, start, input profile, duration, rate;
+// or a deployment flown as a whole federation in-process, closed loop through the autopilot),
+// what the reference is (handbook, analytic, certification criteria or fedsim's own regression
+// run) and which channels to compare within which Part 60 tolerance or limits. Format:
+// data/qtg/README.md.
 #pragma once
 
 #include <optional>
@@ -38,6 +40,14 @@ enum class Measure {
   value_when,     // the channel when `when_channel` first crosses `threshold`
   minimum,
   maximum,
+  max_abs,        // the largest |channel| over the window (deviations in dots)
+};
+
+/// Samples a check keeps: those where `channel` (interpolated at the sample's time) lies within
+/// [min, max], e.g. the approach below 1000 ft (`while:` in the test file).
+struct Condition {
+  std::string channel;
+  double min = 0, max = 0;
 };
 
 struct Check {
@@ -52,13 +62,32 @@ struct Check {
   std::optional<double> reference_value;  // derived measures
   std::string reference_column;         // time_history (default: the channel)
   Tolerance tolerance;
+  /// `limits: {max, [min,] unit}` instead of a reference value and tolerance: acceptance
+  /// criteria such as "touchdown 200 to 2700 ft beyond the threshold" or "sink rate at most
+  /// 6 ft/s" (then tolerance.unit holds the unit). The check passes when min <= measured <= max.
+  std::optional<double> limit_min, limit_max;
+  bool is_limit() const { return limit_max.has_value(); }
+  std::optional<Condition> while_condition;
   int line = 0;  // where the check is in its file
 };
 
 struct Reference {
-  std::string kind;    // handbook | analytic | regression
+  std::string kind;    // handbook | analytic | criteria | regression | flight_test
   std::string source;  // what it is, named (never presented as flight data unless it is)
   std::string file;    // a time-history CSV, absolute (resolved against the test file)
+};
+
+/// A test flown as a whole federation: `fedsim run DEPLOYMENT --in-process [--scenario FILE]`
+/// (the deployment's federates composed in one process, byte-identical to its DDS lockstep run),
+/// its checks evaluated on what the deployment's `fedsim record` member recorded.
+struct Federation {
+  std::string deployment;  // resolved path
+  std::string scenario;    // resolved path, or empty (an instructor scenario: weather, failures)
+};
+
+/// The runway the landing channels are measured from (data/nav/runways.csv).
+struct RunwaySpec {
+  std::string airport, runway;  // e.g. KSFO, 28R
 };
 
 struct QtgTest {
@@ -67,7 +96,9 @@ struct QtgTest {
   std::string title;
   std::string part60_item;
   std::string aircraft;
-  StartCondition start;
+  StartCondition start;              // fedsim-fly tests
+  std::optional<Federation> federation;  // federation tests (then no start or inputs)
+  std::optional<RunwaySpec> runway;  // needed by the runway channels
   std::string inputs;  // resolved profile path, or empty
   bool inputs_relative = true;
   double duration_s = 0, rate_hz = 0;

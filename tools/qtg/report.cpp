@@ -19,6 +19,11 @@ std::string num(double v, int precision = 4) {
 
 std::string unit_text(const std::string& unit) { return unit == "1" ? "" : " " + unit; }
 
+/// "200 .. 2700" or "≤ 6".
+std::string limits_text(const Check& c) {
+  return c.limit_min ? num(*c.limit_min, 6) + " .. " + num(*c.limit_max, 6) : "≤ " + num(*c.limit_max, 6);
+}
+
 /// Maps data to pixels.
 struct Axes {
   double t0, t1, y0, y1;
@@ -82,9 +87,17 @@ std::string escape_html(const std::string& in) {
 }
 
 std::string svg_plot(const CheckResult& r) {
-  const Series& sim = r.simulated;
-  if (sim.empty()) return "<p>(nothing to plot)</p>";
+  if (r.simulated.empty()) return "<p>(nothing to plot)</p>";
   const Check& c = r.check;
+  // a limit on a value at an event (touchdown) is shown around it: 30 s before, 15 s after
+  const bool zoom = c.is_limit() && c.measure == Measure::value_when && !r.marks.empty();
+  Series zoomed;
+  if (zoom) {
+    for (std::size_t i = 0; i < r.simulated.t.size(); ++i)
+      if (std::fabs(r.simulated.t[i] - r.marks.front().t + 7.5) <= 22.5)
+        zoomed.t.push_back(r.simulated.t[i]), zoomed.x.push_back(r.simulated.x[i]);
+  }
+  const Series& sim = zoom && zoomed.t.size() > 1 ? zoomed : r.simulated;
   const bool history = c.measure == Measure::time_history && !r.reference_series.empty();
   const bool value_band = !history && r.reference && c.measure != Measure::period &&
                           c.measure != Measure::damping_ratio && c.measure != Measure::time_to;
@@ -103,6 +116,15 @@ std::string svg_plot(const CheckResult& r) {
     bt = {from, to}, blo = {*r.reference - b, *r.reference - b},
     bhi = {*r.reference + b, *r.reference + b};
     rt = {from, to}, ry = {*r.reference, *r.reference};
+  } else if (c.is_limit()) {
+    // the allowed range; for a value at an instant (touchdown) only around that instant
+    const double lo = c.limit_min.value_or(std::min(0.0, *std::min_element(sim.x.begin(), sim.x.end())));
+    double b0 = std::max(from, sim.t.front()), b1 = std::min(to, sim.t.back());
+    if ((c.measure == Measure::value_when || c.measure == Measure::value_at) && !r.marks.empty()) {
+      const double half = 0.02 * (sim.t.back() - sim.t.front());
+      b0 = r.marks.front().t - half, b1 = r.marks.front().t + half;
+    }
+    bt = {b0, b1}, blo = {lo, lo}, bhi = {*c.limit_max, *c.limit_max};
   }
   double y0 = *std::min_element(sim.x.begin(), sim.x.end());
   double y1 = *std::max_element(sim.x.begin(), sim.x.end());
@@ -131,6 +153,7 @@ std::string svg_plot(const CheckResult& r) {
     << escape_html(c.channel)
     << " — simulator (blue)";
   if (!rt.empty()) s << ", reference (black dashed), tolerance " << escape_html(c.tolerance.text()) << " (green)";
+  if (c.is_limit()) s << ", limits " << limits_text(c) << " (green)";
   s << "</text>\n";
   if (!bt.empty()) s << band_polygon(a, bt, blo, bhi);
   if (c.measure == Measure::time_to && r.reference) {
@@ -169,7 +192,8 @@ std::string html_report(const std::vector<TestResult>& results, const ReportInfo
     << "Tolerances in the terms of 14 CFR Part 60, Appendix A, Table A2A. <b>" << passed << " of "
     << results.size() << " tests passed.</b></p>\n";
   h << "<p class='note'>References are what each test says they are: <i>handbook</i> (published "
-       "figures, source named), <i>analytic</i> (a textbook formula), <i>regression</i> "
+       "figures, source named), <i>analytic</i> (a textbook formula), <i>criteria</i> "
+       "(acceptance limits such as certification criteria, named: no reference data), <i>regression</i> "
        "(fedsim's own earlier run: it detects change, it is <b>not</b> flight data), "
        "<i>flight_test</i> (a user's own data). Passing a regression test does not validate "
        "the model.</p>\n";
@@ -199,19 +223,27 @@ std::string html_report(const std::vector<TestResult>& results, const ReportInfo
     };
     row("Part 60 Table A2A item", t.part60_item);
     row("aircraft", t.aircraft);
-    std::ostringstream start;
-    start << "trim " << t.start.trim;
-    if (t.start.trim != "ground") start << ", " << num(t.start.alt_ft) << " ft";
-    if (t.start.ktas) start << ", " << num(*t.start.ktas) << " KTAS";
-    if (t.start.kcas) start << ", " << num(*t.start.kcas) << " KCAS";
-    start << ", heading " << num(t.start.heading_deg) << "°, flaps " << num(t.start.flaps);
-    if (t.start.trim == "climb") start << ", flight path " << num(t.start.gamma_deg) << "°";
-    if (t.start.trim == "turn") start << ", bank " << num(t.start.bank_deg) << "°";
-    if (t.start.trim == "ground")
-      start << ", throttle " << num(t.start.throttle) << ", runway " << num(t.start.runway_elevation_m) << " m";
-    row("start", start.str());
-    row("inputs", t.inputs.empty() ? "controls held at the start"
-                                   : t.inputs + (t.inputs_relative ? " (offsets about the start)" : " (absolute)"));
+    if (t.federation) {
+      row("federation", "fedsim run " + t.federation->deployment + " --in-process" +
+                            (t.federation->scenario.empty() ? "" : " --scenario " + t.federation->scenario) +
+                            " (its federates in one process, closed loop; byte-identical to the DDS lockstep run)");
+    } else {
+      std::ostringstream start;
+      start << "trim " << t.start.trim;
+      if (t.start.trim != "ground") start << ", " << num(t.start.alt_ft) << " ft";
+      if (t.start.ktas) start << ", " << num(*t.start.ktas) << " KTAS";
+      if (t.start.kcas) start << ", " << num(*t.start.kcas) << " KCAS";
+      start << ", heading " << num(t.start.heading_deg) << "°, flaps " << num(t.start.flaps);
+      if (t.start.trim == "climb") start << ", flight path " << num(t.start.gamma_deg) << "°";
+      if (t.start.trim == "turn") start << ", bank " << num(t.start.bank_deg) << "°";
+      if (t.start.trim == "ground")
+        start << ", throttle " << num(t.start.throttle) << ", runway " << num(t.start.runway_elevation_m) << " m";
+      row("start", start.str());
+      row("inputs", t.inputs.empty() ? "controls held at the start"
+                                     : t.inputs + (t.inputs_relative ? " (offsets about the start)" : " (absolute)"));
+    }
+    if (t.runway) row("runway", t.runway->airport + " " + t.runway->runway + " (data/nav/runways.csv)");
+    if (r.from_recording) row("recording", r.out_dir + " (evaluated from this recording, not flown by the QTG)");
     row("run", num(t.duration_s) + " s at " + num(t.rate_hz) + " Hz; " + num(r.wall_s, 3) + " s wall");
     row("reference", t.reference.kind + ": " + t.reference.source +
                          (t.reference.file.empty() ? "" : " (" + t.reference.file + ")"));
@@ -223,12 +255,26 @@ std::string html_report(const std::vector<TestResult>& results, const ReportInfo
            "<th>tolerance</th><th>worst excursion</th><th>at (s)</th><th>result</th></tr>\n";
       for (const auto& c : r.checks) {
         const std::string u = unit_text(measure_unit(c.check));
-        h << "<tr><td>" << escape_html(c.check.name) << "</td><td>" << measure_name(c.check.measure)
-          << " of " << escape_html(c.check.channel) << "</td><td>"
-          << (c.measured ? num(*c.measured) + u : (c.check.measure == Measure::time_history ? "time history" : "—"))
-          << "</td><td>" << (c.reference ? num(*c.reference) + u : "time history") << "</td><td>"
-          << escape_html(c.check.tolerance.text()) << "</td><td>";
+        const Check& k = c.check;
+        h << "<tr><td>" << escape_html(k.name) << "</td><td>" << measure_name(k.measure)
+          << " of " << escape_html(k.channel);
+        if (k.while_condition)
+          h << " while " << escape_html(k.while_condition->channel) << " is within "
+            << num(k.while_condition->min) << " .. " << num(k.while_condition->max);
+        if (k.measure == Measure::value_when)
+          h << " when " << escape_html(k.when_channel) << " crosses " << num(*k.threshold);
+        h << "</td><td>"
+          << (c.measured ? num(*c.measured) + u : (k.measure == Measure::time_history ? "time history" : "—"))
+          << "</td><td>";
+        if (k.is_limit()) h << limits_text(k) << u << "</td><td>limits";
+        else h << (c.reference ? num(*c.reference) + u : "time history") << "</td><td>"
+               << escape_html(k.tolerance.text());
+        h << "</td><td>";
         if (!c.problem.empty()) h << escape_html(c.problem);
+        else if (k.is_limit() && c.measured)
+          h << (c.passed ? "inside, " : "OUTSIDE, ") << num(std::fabs(c.worst_excursion)) << u
+            << (c.passed ? " from the limit" : " beyond the limit") << " (" << num(100 * c.worst_ratio, 3)
+            << (k.limit_min ? " % of the half-range from its middle)" : " % of the limit)");
         else h << (c.worst_excursion >= 0 ? "+" : "") << num(c.worst_excursion) << u << " ("
                << num(100 * c.worst_ratio, 3) << " % of tolerance)";
         h << "</td><td>" << num(c.worst_time_s) << "</td><td class='"

@@ -1,11 +1,12 @@
 #!/bin/sh
 # Flies the repository's whole QTG (data/qtg) and checks the run: exit status 0 (every test
 # passed), the report exists, names every test and has a plot; with chromium on PATH the PDF too.
-# Usage: qtg_guide_test.sh FEDSIM_QTG TESTS_DIR OUT_DIR
+# The federation tests (the 737 autoland) run `fedsim run --in-process` with FEDSIM.
+# Usage: qtg_guide_test.sh FEDSIM_QTG TESTS_DIR OUT_DIR [FEDSIM]
 set -u
 qtg=$1 tests=$2 out=$3
 rm -rf "$out"
-"$qtg" --tests "$tests" --out "$out" --pdf auto
+"$qtg" --tests "$tests" --out "$out" --pdf auto ${4:+--fedsim "$4"}
 rc=$?
 report=$out/qtg_report.html
 fail=0

@@ -3,6 +3,7 @@
 // negative controls), the comparison and the report.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -251,7 +252,8 @@ TEST(QtgReport, HtmlHasSummaryPlotsAndEscapes) {
 TEST(QtgGuide, EveryTestFileInTheRepositoryLoads) {
   const auto files = find_tests(FEDSIM_QTG_DATA_DIR);
   EXPECT_FALSE(files.empty());
-  for (const auto& f : files) EXPECT_NO_THROW(load_test(f)) << f;
+  // deployments and scenarios are named from the source tree, as fedsim-qtg looks them up
+  for (const auto& f : files) EXPECT_NO_THROW(load_test(f, {FEDSIM_SOURCE_DIR})) << f;
 }
 
 TEST(QtgChannels, ReferenceCsvRoundTripAndUnitsInHeaders) {
@@ -276,4 +278,183 @@ TEST(QtgChannels, ReferenceCsvRoundTripAndUnitsInHeaders) {
   }
   const std::string nan = write("nan.csv", "time_s, tas_kt\n0, 100\n1, nan\n");
   EXPECT_THROW(read_reference_column(nan, "tas_kt"), std::exception);
+}
+
+// ---- Federation tests: the ILS approach and autoland (docs/qtg.md) ----
+
+namespace {
+
+const char* kFederation = R"yaml(fedsim_qtg_test: 1
+title: 737 autoland
+part60_item: "autoland"
+aircraft: b737
+federation:
+  deployment: deploy/qtg/b737-ils-autoland.yaml
+runway: {airport: KSFO, runway: 28R}
+duration_s: 400
+rate_hz: 50
+reference:
+  kind: criteria
+  source: "AC 120-28D touchdown criteria (test data)"
+checks:
+  - name: localizer
+    channel: loc_dots
+    measure: max_abs
+    while: {channel: height_above_runway_ft, min: 100, max: 1000}
+    limits: {max: 1, unit: dots}
+  - name: touchdown distance
+    channel: beyond_threshold_ft
+    measure: value_when
+    when_channel: on_ground
+    threshold: 0.5
+    limits: {min: 200, max: 2700, unit: ft}
+)yaml";
+
+std::string federation_error(const std::string& text) {
+  try {
+    load_test(write("f.yaml", text), {FEDSIM_SOURCE_DIR});
+    return "";
+  } catch (const fedsim::util::ConfigError& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+TEST(QtgFederation, FileLoadsWithLimitsAndWhile) {
+  const QtgTest t = load_test(write("f.yaml", kFederation), {FEDSIM_SOURCE_DIR});
+  ASSERT_TRUE(t.federation);
+  EXPECT_NE(t.federation->deployment.find("deploy/qtg/b737-ils-autoland.yaml"), std::string::npos);
+  ASSERT_TRUE(t.runway);
+  ASSERT_EQ(t.checks.size(), 2u);
+  EXPECT_TRUE(t.checks[0].is_limit());
+  EXPECT_FALSE(t.checks[0].limit_min);  // one-sided: at most 1 dot
+  ASSERT_TRUE(t.checks[0].while_condition);
+  EXPECT_EQ(t.checks[0].while_condition->channel, "height_above_runway_ft");
+  EXPECT_DOUBLE_EQ(*t.checks[1].limit_min, 200);
+  EXPECT_DOUBLE_EQ(*t.checks[1].limit_max, 2700);
+  const auto a = federation_arguments(t, "/tmp/x");
+  ASSERT_GE(a.size(), 3u);
+  EXPECT_EQ(a[0], "run");
+  EXPECT_NE(std::find(a.begin(), a.end(), "--in-process"), a.end());
+  EXPECT_EQ(std::find(a.begin(), a.end(), "--scenario"), a.end());
+  const auto sources = sources_needed(t);
+  EXPECT_TRUE(sources.count(ChannelSource::navigation_state));
+  EXPECT_TRUE(sources.count(ChannelSource::runway));
+  EXPECT_FALSE(sources.count(ChannelSource::autopilot_state));
+}
+
+TEST(QtgFederation, FormatErrorsAreNamed) {
+  // a federation test takes no start; a fedsim-fly test records no navigation state
+  EXPECT_NE(federation_error(replace(kFederation, "runway: {", "start: {trim: level, ktas: 100}\nrunway: {"))
+                .find("start"), std::string::npos);
+  EXPECT_NE(load_error(replace(kValid, "channel: tas_kt", "channel: loc_dots")).find("federation test only"),
+            std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "runway: {airport: KSFO, runway: 28R}\n", ""))
+                .find("give runway"), std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "runway: 28R}", "runway: 27X}")).find("runway"), std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "deploy/qtg/b737-ils-autoland.yaml", "deploy/nope.yaml"))
+                .find("federation.deployment"), std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "max: 2700, unit: ft", "max: 100, unit: ft")).find("above min"),
+            std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "max: 2700, unit: ft", "max: 2700, unit: m")).find("unit"),
+            std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "max: 2700, unit: ft", "max: .nan, unit: ft")), "");
+  EXPECT_NE(federation_error(replace(kFederation, "{max: 1, unit: dots}", "{max: -1, unit: dots}")).find("above 0"),
+            std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "limits: {min: 200", "tolerance: {percent: 5}\n    limits: {min: 200"))
+                .find("either limits"), std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "measure: value_when", "measure: value_when\n    while: {channel: on_ground, min: 0, max: 1}"))
+                .find("only for the measures"), std::string::npos);
+}
+
+TEST(QtgFederation, ReciprocalRunwaysAndTheRunwayFrame) {
+  EXPECT_EQ(reciprocal_runway("28R"), "10L");
+  EXPECT_EQ(reciprocal_runway("10L"), "28R");
+  EXPECT_EQ(reciprocal_runway("19R"), "1L");
+  EXPECT_EQ(reciprocal_runway("01"), "19");
+  EXPECT_EQ(reciprocal_runway("9C"), "27C");
+  EXPECT_EQ(reciprocal_runway("36"), "18");
+  EXPECT_THROW(reciprocal_runway("37"), std::invalid_argument);
+  EXPECT_THROW(reciprocal_runway("28X"), std::invalid_argument);
+  EXPECT_THROW(reciprocal_runway("R"), std::invalid_argument);
+  // KSFO 28R (data/nav/runways.csv): runway end 37.613538 N 122.35716 W, 4 m, threshold
+  // displaced 91 m; 10L's end 37.628742 N 122.39341 W: 3618 m end to end, so the centreline
+  // from the 28R threshold is 3527 m (11,572 ft), heading 297.8 deg true
+  const RunwayFrame frame({"KSFO", "28R"});
+  const double d2r = M_PI / 180;
+  EXPECT_NEAR(frame.length_m(), 3527, 2);
+  EXPECT_NEAR(frame.elevation_m(), 4.0, 1e-9);
+  EXPECT_NEAR(frame.beyond_threshold_m(37.613538 * d2r, -122.35716 * d2r), -91, 0.5);
+  EXPECT_NEAR(frame.left_of_centreline_m(37.613538 * d2r, -122.35716 * d2r), 0, 0.5);
+  EXPECT_NEAR(frame.beyond_threshold_m(37.628742 * d2r, -122.39341 * d2r), frame.length_m(), 1e-6);
+  EXPECT_NEAR(frame.left_of_centreline_m(37.628742 * d2r, -122.39341 * d2r), 0, 1e-6);
+  // 100 m north of the centreline is right of it, landing on 298 deg: the left normal points to
+  // 298 - 90 = 208 deg, whose north component is cos(208 deg) = -0.883
+  const double north = 100.0 / 6378137.0 / d2r;  // about 100 m of latitude
+  EXPECT_NEAR(frame.left_of_centreline_m((37.613538 + north) * d2r, -122.35716 * d2r), -100 * 0.883, 2);
+  EXPECT_THROW(RunwayFrame({"KSFO", "27"}), std::invalid_argument);
+}
+
+TEST(QtgFederation, LimitsMaxAbsAndWhileCondition) {
+  // a deviation that is 0.3 dots on the approach and 2 dots on the ground roll (height 0)
+  Channels flown;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i;
+    flown["height_above_runway_ft"].t.push_back(t);
+    flown["height_above_runway_ft"].x.push_back(t < 80 ? 2000 - 25 * t : 0);
+    flown["loc_dots"].t.push_back(t);
+    flown["loc_dots"].x.push_back(t < 80 ? (t == 60 ? -0.3 : 0.1) : 2.0);
+  }
+  Check c;
+  c.name = "localizer";
+  c.channel = "loc_dots";
+  c.measure = Measure::max_abs;
+  c.limit_max = 1.0;  // at most 1 dot
+  c.tolerance.unit = "dots";
+  c.while_condition = Condition{"height_above_runway_ft", 100, 1000};
+  auto r = evaluate_check(c, flown, nullptr, 100);
+  EXPECT_TRUE(r.passed) << r.problem;
+  EXPECT_NEAR(*r.measured, 0.3, 1e-12);  // |-0.3| at 60 s (height 500 ft); the ground roll left out
+  EXPECT_NEAR(r.worst_time_s, 60, 1e-12);
+  EXPECT_NEAR(r.worst_ratio, 0.3, 1e-12);  // 30 % of the limit used
+  // the negative controls: without the condition the ground roll's 2 dots break the limit; a
+  // tighter limit fails; a condition no sample meets is a problem, not a pass
+  c.while_condition.reset();
+  EXPECT_FALSE(evaluate_check(c, flown, nullptr, 100).passed);
+  c.while_condition = Condition{"height_above_runway_ft", 100, 1000};
+  c.limit_max = 0.2;
+  EXPECT_FALSE(evaluate_check(c, flown, nullptr, 100).passed);
+  c.while_condition = Condition{"height_above_runway_ft", 5000, 6000};
+  r = evaluate_check(c, flown, nullptr, 100);
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.problem.find("no sample while"), std::string::npos) << r.problem;
+  c.while_condition = Condition{"gs_dots", 0, 1};
+  r = evaluate_check(c, flown, nullptr, 100);
+  EXPECT_NE(r.problem.find("gs_dots"), std::string::npos) << r.problem;
+}
+
+TEST(QtgFederation, LimitReportShowsTheRange) {
+  QtgTest t = load_test(write("f.yaml", kFederation), {FEDSIM_SOURCE_DIR});
+  Channels flown;
+  for (int i = 0; i <= 400; ++i) {
+    const double t_s = i;
+    flown["on_ground"].t.push_back(t_s), flown["on_ground"].x.push_back(t_s >= 300 ? 1 : 0);
+    flown["beyond_threshold_ft"].t.push_back(t_s), flown["beyond_threshold_ft"].x.push_back(230 * (t_s - 295));
+    flown["height_above_runway_ft"].t.push_back(t_s), flown["height_above_runway_ft"].x.push_back(std::max(0.0, 3000 - 10 * t_s));
+    flown["loc_dots"].t.push_back(t_s), flown["loc_dots"].x.push_back(0.05);
+  }
+  TestResult tr;
+  tr.test = t;
+  tr.ran = true;
+  tr.checks = evaluate_test(t, flown);
+  ASSERT_EQ(tr.checks.size(), 2u);
+  EXPECT_TRUE(tr.checks[1].passed);
+  EXPECT_NEAR(*tr.checks[1].measured, 230 * 4.5, 1e-9);  // on_ground crosses 0.5 at 299.5 s
+  const std::string html = html_report({tr}, {"2026-01-01T00:00:00Z", "data/qtg", 1.0});
+  EXPECT_NE(html.find("200 .. 2700 ft"), std::string::npos);
+  EXPECT_NE(html.find("≤ 1 dots"), std::string::npos);
+  EXPECT_NE(html.find("inside, "), std::string::npos);
+  EXPECT_NE(html.find("fedsim run "), std::string::npos);
+  EXPECT_NE(html.find("KSFO 28R"), std::string::npos);
 }
