@@ -1,7 +1,8 @@
 // fedsim: the command-line front door. `fedsim run` starts a federation from a deployment file;
 // `fedsim command ...` sends instructor commands; `fedsim graph` draws a deployment's data flow;
 // `fedsim topic list|echo|hz|bw|info` and `fedsim record` monitor and record live topics;
-// `fedsim soak` runs the federation in realtime for a while and checks it stays healthy; `fedsim nav
+// `fedsim soak` runs the federation in realtime for a while and checks it stays healthy; `fedsim
+// latency` measures the transport delay from a control step to each output; `fedsim nav
 // find|near` looks up the navigation database; `fedsim io calibrate` calibrates an inceptor;
 // `fedsim image montage` puts channel pictures side by side; `fedsim qtg` runs the test guide.
 #include "fedsim/command_cli.hpp"
@@ -9,6 +10,7 @@
 #include "fedsim/graph.hpp"
 #include "fedsim/image_cli.hpp"
 #include "fedsim/io_cli.hpp"
+#include "fedsim/latency.hpp"
 #include "fedsim/launcher.hpp"
 #include "fedsim/nav_cli.hpp"
 #include "fedsim/soak.hpp"
@@ -65,6 +67,7 @@ int main(int argc, char** argv) {
   fedsim::launcher::add_io_commands(app, exit_code);
   fedsim::launcher::add_image_commands(app, exit_code);
   fedsim::launcher::add_soak_command(app, exit_code);
+  fedsim::launcher::add_latency_command(app, exit_code);
   // listed for --help only: `fedsim qtg` is handed to fedsim-qtg above, before parsing
   app.add_subcommand("qtg", "run the Qualification Test Guide (fedsim-qtg, docs/qtg.md)");
   CLI11_PARSE(app, argc, argv);
