@@ -101,6 +101,46 @@ AuthenticationReporter& authentication_reporter() {
 }
 }  // namespace
 
+// Every participant's listener: refused remote participants (DDS Security) and the reliable
+// writers discovered, by topic.
+class DdsParticipant::Listener : public fdds::DomainParticipantListener {
+ public:
+  void onParticipantAuthentication(
+      fdds::DomainParticipant* participant,
+      eprosima::fastrtps::rtps::ParticipantAuthenticationInfo&& info) override {
+    authentication_reporter().onParticipantAuthentication(participant, std::move(info));
+  }
+  void on_publisher_discovery(fdds::DomainParticipant*,
+                              eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override {
+    using Status = eprosima::fastrtps::rtps::WriterDiscoveryInfo::DISCOVERY_STATUS;
+    const auto& data = info.info;
+    std::ostringstream guid;
+    guid << data.guid();
+    const std::string topic = data.topicName().to_string();
+    const bool gone = info.status == Status::REMOVED_WRITER;
+    const bool reliable = data.m_qos.m_reliability.kind == fdds::RELIABLE_RELIABILITY_QOS;
+    std::lock_guard lock(mutex_);
+    if (!gone && reliable) {
+      reliable_writers_[topic].insert(guid.str());
+    } else if (auto it = reliable_writers_.find(topic); it != reliable_writers_.end()) {
+      it->second.erase(guid.str());
+    }
+  }
+  bool has_reliable_writer(const std::string& topic) const {
+    std::lock_guard lock(mutex_);
+    const auto it = reliable_writers_.find(topic);
+    return it != reliable_writers_.end() && !it->second.empty();
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, std::set<std::string>> reliable_writers_;  // topic -> writer GUIDs
+};
+
+bool DdsParticipant::has_reliable_writer(const std::string& topic) const {
+  return listener_->has_reliable_writer(topic);
+}
+
 void load_qos_profiles(const std::string& qos_file) {
   silence_spurious_dynamic_type_errors();
   static std::mutex mutex;
@@ -132,10 +172,10 @@ DdsParticipant::DdsParticipant(const ParticipantOptions& options) : options_(opt
                    options_.qos_file);
   }
   qos.name(options_.name);
-  participant_ = add_security_properties(qos, options_.name)
-                     ? factory->create_participant(options_.domain_id, qos, &authentication_reporter(),
-                                                   fdds::StatusMask::none())
-                     : factory->create_participant(options_.domain_id, qos);
+  add_security_properties(qos, options_.name);
+  listener_ = std::make_unique<Listener>();
+  participant_ = factory->create_participant(options_.domain_id, qos, listener_.get(),
+                                             fdds::StatusMask::none());
   if (!participant_) {
     const char* security = std::getenv("FEDSIM_SECURITY_DIR");
     throw DdsError("cannot create a DDS participant on domain " +

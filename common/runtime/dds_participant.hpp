@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -55,8 +56,18 @@ class DdsParticipant : public std::enable_shared_from_this<DdsParticipant> {
   /// Same, for a type support built elsewhere (dynamic types in the topic tools).
   fdds::Topic* topic_for(const std::string& name, fdds::TypeSupport type);
 
+  /// True while a RELIABLE DataWriter of `topic` in another participant is known (from
+  /// discovery; Fast DDS 2.9 cannot tell a reader its matched writers' QoS). The runtime reads a
+  /// lockstep input reliably where its writer offers it (Subscription::read_reliably_too).
+  /// Not updated while a tool has replaced the participant's listener (topic_monitor.cpp).
+  bool has_reliable_writer(const std::string& topic) const;
+
+  class Listener;
+
  private:
   explicit DdsParticipant(const ParticipantOptions& options);
+
+  std::unique_ptr<Listener> listener_;  // outlives participant_ (deleted in the destructor body)
 
   ParticipantOptions options_;
   fdds::DomainParticipant* participant_ = nullptr;

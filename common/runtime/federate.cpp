@@ -214,10 +214,20 @@ std::shared_ptr<Federate::LockstepInput> Federate::register_lockstep_input(
 std::function<void(std::uint64_t)> Federate::add_lockstep_input(
     const std::string& topic, std::function<int()> matched_writers) {
   auto input = register_lockstep_input(topic, std::move(matched_writers));
-  return [this, input](std::uint64_t frame) {
-    input->last_frame.store(static_cast<std::int64_t>(frame));
-    on_lockstep_input();
-  };
+  return [this, input](std::uint64_t frame) { on_lockstep_input(*input, frame); };
+}
+
+void Federate::LockstepInput::record_locked(std::int64_t frame) {
+  recent_frames[recent_next] = frame;
+  recent_next = (recent_next + 1) % recent_frames.size();
+}
+
+std::int64_t Federate::LockstepInput::newest_locked() const {
+  return *std::max_element(recent_frames.begin(), recent_frames.end());
+}
+
+bool Federate::LockstepInput::has_locked(std::int64_t frame) const {
+  return std::find(recent_frames.begin(), recent_frames.end(), frame) != recent_frames.end();
 }
 
 void Federate::handle_command(const msg::SimCommand& command) {
@@ -257,33 +267,60 @@ void Federate::handle_tick(const msg::FrameTick& tick) {
   pending_tick_ = tick;
   pending_ = true;
   last_tick_arrival_ns_ = util::monotonic_ns();
-  const bool ready = inputs_ready_locked(tick.frame());
+  const bool ready = inputs_ready_locked(tick);
   lock.unlock();
   if (ready) frame_bell_.ring();
 }
 
-void Federate::on_lockstep_input() {
+// Listener thread: a lockstep input's sample of `frame` arrived.
+void Federate::on_lockstep_input(LockstepInput& input, std::uint64_t frame) {
   bool wake = false;
   {
     std::lock_guard lock(frame_mutex_);
-    wake = pending_ && !stopping_ && inputs_ready_locked(pending_tick_.frame());
+    input.record_locked(static_cast<std::int64_t>(frame));
+    wake = pending_ && !stopping_ && inputs_ready_locked(pending_tick_);
   }
   if (wake) frame_bell_.ring();
 }
 
-bool Federate::inputs_ready_locked(std::uint64_t frame) const {
-  const auto needed = static_cast<std::int64_t>(frame) - 1;
-  return std::all_of(inputs_.begin(), inputs_.end(), [&](const auto& in) {
-    return in->matched_writers() == 0 || in->silent.load() || in->last_frame.load() >= needed;
-  });
+// In lockstep, frame N needs the sample stamped N-1, or a newer one with nothing missing before
+// it (a writer may write nothing in a frame: nav before its first aircraft state). "Any sample
+// of N-1 or later" is not enough: a writer that has stepped frame N already may have delivered
+// N while N-1 was lost, and the step would read N-2's sample (Subscription::latest_before)
+// without counting a late input (found by tests/hosts with 5% loss between namespaces). In
+// realtime a writer may skip frames (skipped ticks), so a newer sample is accepted as before.
+bool Federate::input_ready_locked(const LockstepInput& in, const msg::FrameTick& tick) const {
+  const auto needed = static_cast<std::int64_t>(tick.frame()) - 1;
+  if (needed < 0 || in.matched_writers() == 0 || in.silent.load()) return true;
+  if (tick.mode() != msg::TIMING_MODE_LOCKSTEP) return in.newest_locked() >= needed;
+  if (in.has_locked(needed)) return true;
+  return in.newest_locked() > needed && !(in.missing_samples && in.missing_samples());
 }
 
-void Federate::log_late_inputs_locked(std::uint64_t frame) const {
+bool Federate::inputs_ready_locked(const msg::FrameTick& tick) const {
+  return std::all_of(inputs_.begin(), inputs_.end(),
+                     [&](const auto& in) { return input_ready_locked(*in, tick); });
+}
+
+void Federate::log_late_inputs_locked(const msg::FrameTick& tick) const {
   for (const auto& in : inputs_) {
-    if (in->matched_writers() > 0 && in->last_frame.load() < static_cast<std::int64_t>(frame) - 1) {
-      log_->warn("frame={} input={} missing after {:.3f}s: stepping with its last sample", frame,
-                 in->topic, input_timeout_s(pending_tick_));
+    if (!input_ready_locked(*in, tick)) {
+      log_->warn("frame={} input={} missing after {:.3f}s: stepping with its last sample",
+                 tick.frame(), in->topic, input_timeout_s(tick));
     }
+  }
+}
+
+// Frame thread: a lockstep input read best effort gets a reliable reader as soon as a reliable
+// writer of its topic is known (federate.hpp).
+void Federate::read_inputs_reliably() {
+  std::vector<std::shared_ptr<LockstepInput>> inputs;
+  {
+    std::lock_guard lock(frame_mutex_);
+    inputs = inputs_;
+  }
+  for (const auto& in : inputs) {
+    if (in->read_reliably) in->read_reliably();
   }
 }
 
@@ -400,6 +437,15 @@ void Federate::wait_for_inputs_to_match() {
       log_->warn("input={} has no writer yet: stepping without it until one appears", in->topic);
     }
   }
+  // The repair path before the first tick where the writers are already known (later ones are
+  // picked up by the frame loop).
+  read_inputs_reliably();
+  for (const auto& in : inputs) {
+    while (in->reliable_reader_unmatched && in->reliable_reader_unmatched() &&
+           std::chrono::steady_clock::now() < until && !shutdown_requested()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
 }
 
 int Federate::run(StepFunction step) {
@@ -475,7 +521,7 @@ void Federate::frame_loop() {
     {
       std::lock_guard lock(frame_mutex_);
       if (pending_ && !stopping_ && !stop_requested_.load()) {
-        const bool ready = inputs_ready_locked(pending_tick_.frame());
+        const bool ready = inputs_ready_locked(pending_tick_);
         const double waited_s = (util::monotonic_ns() - pending_since_ns_) * 1e-9;
         const double timeout_s = input_timeout_s(pending_tick_);
         // Waiting for an input: wake when its timeout runs out, not a loop period later.
@@ -483,7 +529,7 @@ void Federate::frame_loop() {
             wait, std::chrono::nanoseconds(static_cast<std::int64_t>(
                       std::max(0.0, timeout_s - waited_s) * 1e9) + 1));
         if (ready || waited_s >= timeout_s) {
-          if (!ready) log_late_inputs_locked(pending_tick_.frame());
+          if (!ready) log_late_inputs_locked(pending_tick_);
           tick = pending_tick_;
           pending_ = false;
           stepping_ = true;
@@ -504,6 +550,7 @@ void Federate::frame_loop() {
     }
     if (std::chrono::steady_clock::now() >= next_status) {
       next_status += kStatusPeriod;
+      read_inputs_reliably();  // a reliable writer that appeared since
       // Between steps, on the frame thread: the component's note cannot race its step.
       publish_status(announced_running ? msg::FEDERATE_RUNNING : msg::FEDERATE_READY,
                      stepped_any_ ? component_->progress_note() : std::string());

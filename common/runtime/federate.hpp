@@ -12,9 +12,15 @@
 //
 // Lockstep inputs: a read port on a lockstep-input topic must deliver the sample of frame N-1
 // before frame N steps (when a writer is matched), which makes a lockstep run reproducible:
-// every federate sees exactly the previous frame's data, whatever the thread timing. A missing
-// input is waited for at most --input-timeout (half a frame in realtime), then the frame steps
-// with the last sample and the late input is counted and logged.
+// every federate sees exactly the previous frame's data, whatever the thread timing and losses.
+// In lockstep the sample stamped N-1 itself must have arrived, or a newer one with none of the
+// writer's samples missing before it (a writer that wrote nothing in frame N-1); a newer one
+// does not stand in for a lost one. In realtime any sample of frame N-1 or later will do. A
+// port read best effort whose writer is reliable also gets a reliable reader
+// (Subscription::read_reliably_too), so a sample lost on the network is repaired rather than
+// missed. A missing input is waited for at most --input-timeout (half a
+// frame in realtime), then the frame steps with the last sample and the late input is counted
+// and logged.
 #pragma once
 
 #include "common/runtime/component.hpp"
@@ -27,6 +33,7 @@
 
 #include <spdlog/logger.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -104,7 +111,19 @@ class Federate {
   struct LockstepInput {
     std::string topic;
     std::function<int()> matched_writers;
-    std::atomic<std::int64_t> last_frame{-1};
+    // Adds a reliable reader where the topic's writer is reliable (nullptr: a tool's own reader),
+    // and tells whether such a reader was added but has not matched yet.
+    std::function<void()> read_reliably;
+    std::function<bool()> reliable_reader_unmatched;
+    // True while one of its writer's samples is known lost and not yet repaired (nullptr: never
+    // known; a tool's reader of a reliable writer gets every sample in order).
+    std::function<bool()> missing_samples;
+    // The frames of the samples received lately, newest last (guarded by frame_mutex_).
+    std::array<std::int64_t, 8> recent_frames{-1, -1, -1, -1, -1, -1, -1, -1};
+    std::size_t recent_next = 0;
+    void record_locked(std::int64_t frame);
+    bool has_locked(std::int64_t frame) const;
+    std::int64_t newest_locked() const;  // of the recent ones (an absurd stamp does not stick)
     // Its matched writer is silent (the port's silence watch): frames stop waiting for it until
     // it writes again, so a silent writer costs --silent-frames late frames, not every frame.
     std::atomic<bool> silent{false};
@@ -115,9 +134,11 @@ class Federate {
                                                          std::function<int()> matched_writers);
   void handle_tick(const msg::FrameTick& tick);
   void handle_command(const msg::SimCommand& command);
-  void on_lockstep_input();
-  bool inputs_ready_locked(std::uint64_t frame) const;
-  void log_late_inputs_locked(std::uint64_t frame) const;
+  void on_lockstep_input(LockstepInput& input, std::uint64_t frame);
+  bool input_ready_locked(const LockstepInput& input, const msg::FrameTick& tick) const;
+  bool inputs_ready_locked(const msg::FrameTick& tick) const;
+  void log_late_inputs_locked(const msg::FrameTick& tick) const;
+  void read_inputs_reliably();
   void run_frame(const msg::FrameTick& tick, bool late);
   void publish_done(std::uint64_t frame, float compute_us, std::uint64_t latency_ns);
   void publish_status(msg::FederateState state, const std::string& message);
@@ -191,10 +212,16 @@ Subscription<T>& Federate::subscribe(const Topic<T>& topic, std::string_view qos
     input->topic = topic.name();
     auto sub = std::make_shared<Subscription<T>>(
         dds_, topic, qos, [this, in = input.get()](const T& sample, const auto&) {
-          in->last_frame.store(static_cast<std::int64_t>(sample.stamp().frame()));
-          on_lockstep_input();
+          on_lockstep_input(*in, sample.stamp().frame());
         });
     input->matched_writers = [s = sub.get()] { return s->matched_writers(); };
+    input->read_reliably = [s = sub.get(), dds = dds_.get()] {
+      if (dds->has_reliable_writer(s->topic_name())) s->read_reliably_too(qos::kLockstepData);
+    };
+    input->missing_samples = [s = sub.get()] { return s->missing_samples(); };
+    input->reliable_reader_unmatched = [s = sub.get()] {
+      return s->has_reliable_reader() && !s->reads_reliably();
+    };
     {
       std::lock_guard lock(frame_mutex_);
       inputs_.push_back(input);

@@ -78,6 +78,14 @@ late_join)
   # The federation without the trainer, in realtime: flight and recorder only, 400 frames (8 s).
   sed -i -e '/- name: trainer/,/args: \[--elevator/d' -e 's/--frames, "300"/--frames, "400"/' "$work/rt.yaml"
   ! grep -q "name: trainer" "$work/rt.yaml" || fail "could not remove the trainer from the deployment"
+  # Under ctest -j load the trainer (no member: it writes when a tick reaches it) was seen silent
+  # for the default --silent-frames 10 (200 ms) twice in 12 runs: once right after joining (the
+  # flight's reader matched its controls writer before that writer matched the reader: discovery
+  # is two-sided), once when the timing federate stalled 200 ms and its catch-up ticks overtook
+  # the starved trainer. The flight reported silent_writer, exited 1 and the run failed. Silence
+  # is not what this case tests: 50 frames (1 s).
+  sed -i 's/--state-qos, lockstep_data\]/--state-qos, lockstep_data, --silent-frames, "50"]/' "$work/rt.yaml"
+  grep -q -- '--silent-frames, "50"' "$work/rt.yaml" || fail "could not set the flight's --silent-frames"
   "$bin/fedsim" run "$work/rt.yaml" --mode realtime --domain 44 --out "$work/rt" \
     --progress 0 --quiet > "$work/rt.out" 2>&1 &
   federation=$!

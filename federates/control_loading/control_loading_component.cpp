@@ -194,6 +194,9 @@ void ControlLoadingComponent::report_status_change(const runtime::FrameContext& 
 }
 
 void ControlLoadingComponent::on_ticks_stopped(const runtime::FrameContext& last, double silent_s) {
+  const double silent_periods = last.frame_period_s > 0.0 ? silent_s / last.frame_period_s : 1e9;
+  // A late tick: hold the forces and wait for it (tick_gap_watch.hpp).
+  if (tick_gaps_.on_silence(silent_periods) != timing::TickGapWatch::Verdict::kStopped) return;
   if (loader_.status() == LoaderStatus::kSafe) return;
   char why[96];
   std::snprintf(why, sizeof why, "no frame tick for %.0f ms after frame %llu", silent_s * 1000.0,
@@ -208,6 +211,17 @@ void ControlLoadingComponent::on_ticks_stopped(const runtime::FrameContext& last
 }
 
 void ControlLoadingComponent::step(const runtime::FrameContext& frame) {
+  const auto tick = tick_gaps_.on_tick(frame.frame);
+  if (tick != timing::TickGapWatch::Verdict::kOnTime) {
+    log().warn("frame={} late tick: none for {:.0f} ms before it, {} ({} late so far)", frame.frame,
+               tick_gaps_.last_gap_periods() * frame.frame_period_s * 1000.0,
+               tick == timing::TickGapWatch::Verdict::kBurst ? "too many: cut off" : "ridden through",
+               tick_gaps_.late_ticks());
+  }
+  if (tick == timing::TickGapWatch::Verdict::kBurst && loader_.status() != LoaderStatus::kSafe) {
+    loader_.cut_off(std::to_string(tick_gaps_.limits().burst_late_ticks) + " late frame ticks within " +
+                    std::to_string(tick_gaps_.limits().burst_window_frames) + " frames");
+  }
   take_inputs(frame);
   if (engage_wanted_ && have_inputs_ && !instructor_cut_ && loader_.status() == LoaderStatus::kSafe) {
     loader_.engage();

@@ -20,11 +20,13 @@
 //
 // Engages once the first valid aircraft state arrives (--engage). Cut off to SAFE within the
 // frame, reported by name: a non-finite sample ("input_rejected"), flight data older than the
-// watchdog, an overspeed, frame ticks that stop arriving in realtime (the host's tick watchdog,
-// 1.5 frame periods: "control_loading_cut_off"), the instructor (`fedsim command fail
+// watchdog, an overspeed, frame ticks that stop arriving in realtime (no tick for 2.5 frame
+// periods or 3 late ticks within 50 frames; one late tick is ridden through and counted:
+// "control_loading_cut_off"), the instructor (`fedsim command fail
 // control_loading`; `restore control_loading` engages it again).
 #pragma once
 
+#include "common/frame_clock/tick_gap_watch.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
 #include "control_loading/model/control_loading.hpp"
@@ -67,12 +69,16 @@ class ControlLoadingComponent final : public runtime::Component {
 
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
-  /// Realtime: no tick for 1.5 frame periods (the next one half a frame late) cuts the loader
-  /// off, reported as control_loading_cut_off, and publishes the SAFE state; it stays SAFE
-  /// until `fedsim command restore control_loading` (a loader does not re-engage on its own).
+  /// Realtime (common/frame_clock/tick_gap_watch.hpp): a tick more than 1.5 frame periods late
+  /// is ridden through (the forces held) and counted as a late tick; no tick for 2.5 periods,
+  /// or 3 late ticks within 50 frames, cuts the loader off, reported as control_loading_cut_off,
+  /// and publishes the SAFE state; it stays SAFE until `fedsim command restore
+  /// control_loading` (a loader does not re-engage on its own).
   double tick_watchdog_periods() const override { return kTickWatchdogPeriods; }
   void on_ticks_stopped(const runtime::FrameContext& last, double silent_s) override;
-  static constexpr double kTickWatchdogPeriods = 1.5;
+  static constexpr double kTickWatchdogPeriods = timing::TickGapWatch::Limits{}.late_periods;
+  /// Late ticks ridden through so far.
+  std::uint64_t late_ticks() const { return tick_gaps_.late_ticks(); }
 
   const ControlLoading& loader() const { return loader_; }
 
@@ -101,6 +107,7 @@ class ControlLoadingComponent final : public runtime::Component {
   bool engage_wanted_ = false;
   bool instructor_cut_ = false;
   LoaderStatus last_status_ = LoaderStatus::kSafe;
+  timing::TickGapWatch tick_gaps_;  // late ticks ridden through, stops, bursts
   msg::ControlLoadingState sample_;
 };
 

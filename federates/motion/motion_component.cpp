@@ -133,6 +133,9 @@ void MotionComponent::report_status_change(const runtime::FrameContext& frame) {
 
 void MotionComponent::on_ticks_stopped(const runtime::FrameContext& last, double silent_s) {
   if (!platform_) return;
+  const double silent_periods = last.frame_period_s > 0.0 ? silent_s / last.frame_period_s : 1e9;
+  // A late tick: hold the last command (the jacks' servos do) and wait for it (tick_gap_watch.hpp).
+  if (tick_gaps_.on_silence(silent_periods) != timing::TickGapWatch::Verdict::kStopped) return;
   if (platform_->status() != MotionStatus::kFault && platform_->status() != MotionStatus::kParked) {
     char why[96];
     std::snprintf(why, sizeof why, "no frame tick for %.0f ms after frame %llu", silent_s * 1000.0,
@@ -154,6 +157,7 @@ void MotionComponent::on_ticks_stopped(const runtime::FrameContext& last, double
 
 void MotionComponent::step(const runtime::FrameContext& frame) {
   park_steps_without_ticks_ = 0;
+  const auto tick = tick_gaps_.on_tick(frame.frame);
   if (!platform_ || std::abs(platform_dt_s_ - frame.dt_s) > 1e-9) {
     // Built at the federation's frame period: the washout's filters and the actuator sub-steps
     // depend on it (validate() names the field a period makes invalid).
@@ -163,6 +167,17 @@ void MotionComponent::step(const runtime::FrameContext& frame) {
   }
   take_aircraft_state(frame);
   apply_instructor();
+  if (tick != timing::TickGapWatch::Verdict::kOnTime) {
+    log().warn("frame={} late tick: none for {:.0f} ms before it, {} ({} late so far)", frame.frame,
+               tick_gaps_.last_gap_periods() * frame.frame_period_s * 1000.0,
+               tick == timing::TickGapWatch::Verdict::kBurst ? "too many: cut off" : "ridden through",
+               tick_gaps_.late_ticks());
+  }
+  if (tick == timing::TickGapWatch::Verdict::kBurst && platform_->status() != MotionStatus::kFault &&
+      platform_->status() != MotionStatus::kParked) {
+    platform_->trip(std::to_string(tick_gaps_.limits().burst_late_ticks) + " late frame ticks within " +
+                    std::to_string(tick_gaps_.limits().burst_window_frames) + " frames");
+  }
   platform_->step(inputs_);  // a fault parks on its own path; before any input: 1 g at rest
   report_status_change(frame);
   to_message(platform_->outputs(), platform_->fault_reason(), sample_);

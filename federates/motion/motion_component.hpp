@@ -17,6 +17,7 @@
 // control-loading and motion issue's watchdog.)
 #pragma once
 
+#include "common/frame_clock/tick_gap_watch.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
 #include "motion/model/motion_platform.hpp"
@@ -45,12 +46,16 @@ class MotionComponent final : public runtime::Component {
 
   void on_command(const msg::SimCommand& command) override;
   void step(const runtime::FrameContext& frame) override;
-  /// Realtime: no tick for 1.5 frame periods trips the platform ("motion_fault": its park
-  /// starts within that time), and the platform's own controller keeps stepping the park at
-  /// the frame period on the wall clock, publishing each step, until the ticks come back.
+  /// Realtime (common/frame_clock/tick_gap_watch.hpp): a tick more than 1.5 frame periods late
+  /// is ridden through (the last command held) and counted as a late tick; no tick for 2.5
+  /// periods, or 3 late ticks within 50 frames, trips the platform ("motion_fault"), and the
+  /// platform's own controller keeps stepping the park at the frame period on the wall clock,
+  /// publishing each step, until the ticks come back.
   double tick_watchdog_periods() const override { return kTickWatchdogPeriods; }
   void on_ticks_stopped(const runtime::FrameContext& last, double silent_s) override;
-  static constexpr double kTickWatchdogPeriods = 1.5;
+  static constexpr double kTickWatchdogPeriods = timing::TickGapWatch::Limits{}.late_periods;
+  /// Late ticks ridden through so far.
+  std::uint64_t late_ticks() const { return tick_gaps_.late_ticks(); }
 
   /// The platform (nullptr before the first frame: it is built at the federation's period).
   const MotionPlatform* platform() const { return platform_.get(); }
@@ -75,6 +80,7 @@ class MotionComponent final : public runtime::Component {
   std::uint64_t updates_seen_ = 0;
   int silent_frames_ = 0;
   std::uint64_t park_steps_without_ticks_ = 0;  // wall-clock park steps since the last tick
+  timing::TickGapWatch tick_gaps_;              // late ticks ridden through, stops, bursts
   bool instructor_cut_ = false;         // failed by the instructor, until restored
   bool restore_requested_ = false;      // restored: clear the fault once down, then engage
   bool engage_wanted_ = false;          // engage when parked (start, or after a restore)

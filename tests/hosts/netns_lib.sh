@@ -8,6 +8,9 @@
 # touched, and every namespace (with its interfaces) goes away in the EXIT trap.
 # Needs root and `ip netns`; a test that cannot create a namespace exits 77 (CTest SKIP_RETURN_CODE).
 
+# FH_NS_PREFIX (default fh) starts every namespace name: two runs of these tests at the same
+# time on one machine (e.g. by hand beside CTest) need different prefixes.
+FH_NS="${FH_NS_PREFIX:-fh}"
 FH_NETNS_CREATED=()
 FH_PIDS=()
 FH_RELAY_PIDS=()
@@ -17,7 +20,7 @@ fh_fail() { echo "[hosts] FAIL: $*" >&2; exit 1; }
 
 # Exits 77 with the reason when this machine cannot run namespace tests.
 fh_require_netns() {
-  local probe="fh-probe-$$"
+  local probe="$FH_NS-probe-$$"
   if [ "$(id -u)" != 0 ]; then echo "SKIP: network namespace tests need root (CI runs as root)"; exit 77; fi
   if ! command -v ip >/dev/null; then echo "SKIP: iproute2 (ip) is not installed"; exit 77; fi
   if ! ip netns add "$probe" 2>/dev/null; then echo "SKIP: 'ip netns add' is not permitted here"; exit 77; fi
@@ -50,7 +53,7 @@ fh_netns_add() {
 # fh_network TAG: the bridge namespace.
 fh_network() {
   FH_TAG="$1"
-  FH_BR="fh-$FH_TAG-br"
+  FH_BR="$FH_NS-$FH_TAG-br"
   trap fh_cleanup EXIT
   trap 'exit 130' INT TERM
   fh_netns_add "$FH_BR"
@@ -63,7 +66,7 @@ fh_network() {
 # an impaired host's link drops and delays frames both ways (tc netem where the kernel has it,
 # else fedsim-netem-relay; fh_network sets FH_METHOD).
 fh_host() {
-  local name="$1" octet="$2" ns="fh-$FH_TAG-$1"
+  local name="$1" octet="$2" ns="$FH_NS-$FH_TAG-$1"
   fh_netns_add "$ns"
   if [ "${3:-}" = impaired ] && [ "$FH_METHOD" = netem ]; then
     ip link add eth0 netns "$ns" type veth peer name "p-$name" netns "$FH_BR" \
@@ -101,13 +104,13 @@ fh_stop_relays() {
 # fh_in HOST CMD...: runs CMD in host HOST's namespace, in the background (pid in FH_PIDS).
 fh_in() {
   local host="$1"; shift
-  ip netns exec "fh-$FH_TAG-$host" "$@" &
+  ip netns exec "$FH_NS-$FH_TAG-$host" "$@" &
   FH_PIDS+=($!)
 }
 
 # fh_impairment_method: how loss and delay are made on this kernel.
 fh_impairment_method() {
-  local ns="fh-$FH_TAG-br"
+  local ns="$FH_NS-$FH_TAG-br"
   if ip -n "$ns" link add fhnetemprobe type dummy 2>/dev/null; then
     if tc -n "$ns" qdisc add dev fhnetemprobe root netem delay 1ms 2>/dev/null; then
       ip -n "$ns" link del fhnetemprobe; echo netem; return

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -98,7 +99,15 @@ int send(const CommandOptions& o, msg::SimCommand command) {
                 << " (sent anyway)\n";
     }
     pub.publish(command);
-    pub.wait_for_acknowledgments(std::chrono::seconds(2));
+    // Until every matched reader acknowledged it: "matched" is this writer's side only, and a
+    // reader whose side of the match is not complete yet (discovery repaired over a lossy link)
+    // drops the sample until it is; the writer repeats it then, but only while this process
+    // lives. Once 2 s were seen to be too short (tests/hosts, 20% loss: a command lost, exit 0).
+    const double ack_wait_s = std::max(2.0, o.wait_s);
+    if (!pub.wait_for_acknowledgments(std::chrono::milliseconds(static_cast<int>(ack_wait_s * 1000)))) {
+      std::cerr << "fedsim command: not acknowledged by every reader within " << ack_wait_s
+                << " s (a reader that is gone, or one still being discovered, may miss it)\n";
+    }
     std::cout << "sent to " << readers << " reader(s)\n";
     return 0;
   } catch (const std::exception& e) {

@@ -1,5 +1,5 @@
-// `fedsim topic info` and `fedsim topic bw` over loopback (profile fedsim_loopback, domains 170
-// and 171): an in-process runtime::Publisher writes, the tools discover and measure it.
+// `fedsim topic info` and `fedsim topic bw` over loopback (profile fedsim_loopback, domains 170,
+// 176, 182 and 183: not the replay tests' 171-175, which ctest -j runs beside these): an in-process runtime::Publisher writes, the tools discover and measure it.
 #include "tools/topic/test/test_support.hpp"
 #include "tools/topic/topic_tools.hpp"
 
@@ -75,7 +75,7 @@ TEST(TopicInfo, ShowsTheWritersAndReadersQosParticipantAndLocators) {
 }
 
 TEST(TopicBw, MeasuresBytesAndSamplesPerSecondOfAStream) {
-  auto dds = runtime::DdsParticipant::create(loopback(171, "bw_test_publisher"));
+  auto dds = runtime::DdsParticipant::create(loopback(176, "bw_test_publisher"));
   runtime::Publisher<msg::AircraftState> pub(dds, runtime::topics::aircraft_state,
                                              runtime::qos::kState);
   std::atomic<bool> running{true};
@@ -88,7 +88,7 @@ TEST(TopicBw, MeasuresBytesAndSamplesPerSecondOfAStream) {
     }
   });
   BwOptions options;
-  options.dds = loopback(171, "fedsim");
+  options.dds = loopback(176, "fedsim");
   options.topic = "fedsim/aircraft_state";
   options.duration_s = 2.0;
   std::ostringstream out, err;
@@ -112,8 +112,8 @@ TEST(TopicBw, MeasuresBytesAndSamplesPerSecondOfAStream) {
 TEST(Record, TwoTopicsOfOneTypeOnOneParticipant) {
   // fedsim/pilot_controls and fedsim/applied_controls are both PilotControls: the recorder's
   // second reader failed ("already has a compiled type support"), and with it the default
-  // deployment. Both are recorded now (domain 175).
-  auto dds = runtime::DdsParticipant::create(loopback(175, "two_topics_writer"));
+  // deployment. Both are recorded now (domain 183).
+  auto dds = runtime::DdsParticipant::create(loopback(183, "two_topics_writer"));
   runtime::Publisher<msg::PilotControls> controls(dds, runtime::topics::pilot_controls,
                                                   runtime::qos::kPilotControls);
   runtime::Publisher<msg::PilotControls> applied(dds, runtime::topics::applied_controls,
@@ -131,7 +131,7 @@ TEST(Record, TwoTopicsOfOneTypeOnOneParticipant) {
   const auto out_dir = std::filesystem::temp_directory_path() / "fedsim_two_topics_record";
   std::filesystem::remove_all(out_dir);
   RecordOptions options;
-  options.dds = loopback(175, "fedsim");
+  options.dds = loopback(183, "fedsim");
   options.topics = {"fedsim/pilot_controls", "fedsim/applied_controls"};
   options.out_dir = out_dir.string();
   options.duration_s = 1.5;
@@ -200,12 +200,12 @@ bool on_path(const std::string& program) {
 TEST(TopicHz, SurvivesAKeyedForeignTypeWrittenWithoutKeyHashes) {
   // Issue 11: `fedsim topic hz` on a keyed topic of a type fedsim does not know, written by
   // Cyclone DDS (which sends no key hash), aborted in a Fast DDS assertion (exit 134): the raw
-  // type's getKey failed. Now it reports the rate, and bw the sizes (domain 172).
+  // type's getKey failed. Now it reports the rate, and bw the sizes (domain 182).
   if (!on_path("ddsperf")) GTEST_SKIP() << "ddsperf (cyclonedds-tools) not installed";
-  CycloneDdsperfPublisher cyclone(172);
+  CycloneDdsperfPublisher cyclone(182);
   ASSERT_TRUE(cyclone.started());
   HzOptions hz;
-  hz.dds = loopback(172, "fedsim");
+  hz.dds = loopback(182, "fedsim");
   hz.topic = "DDSPerfRDataKS";
   hz.wait_s = 10.0;
   hz.duration_s = 2.0;
@@ -214,7 +214,7 @@ TEST(TopicHz, SurvivesAKeyedForeignTypeWrittenWithoutKeyHashes) {
   EXPECT_NE(out.str().find("average rate: "), std::string::npos) << out.str() << err.str();
 
   BwOptions bw;
-  bw.dds = loopback(172, "fedsim");
+  bw.dds = loopback(182, "fedsim");
   bw.topic = "DDSPerfRDataKS";
   bw.wait_s = 5.0;
   bw.duration_s = 2.0;

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # docs/monitoring.md's tshark recipe, run: tshark on loopback decodes fedsim's RTPS discovery
-# and shows its topic and type names. A timing federate (domain 173, loopback profile) publishes
-# fedsim/frame_tick and fedsim/federate_status while tshark listens on domain 173's port range
-# (7400 + 250 * 173 = 50650 ..). Endpoints (topic and type names: DATA(w), DATA(r)) are only
+# and shows its topic and type names. A timing federate (domain 185, loopback profile) publishes
+# fedsim/frame_tick and fedsim/federate_status while tshark listens on domain 185's port range
+# (7400 + 250 * 185 = 53650 ..; not 173, which a replay test uses side by side under ctest -j). Endpoints (topic and type names: DATA(w), DATA(r)) are only
 # announced to a participant that was discovered, so `fedsim topic list` joins as the second
 # participant. Exit 77 (skipped) where tshark is not installed.
 # Usage: tshark_rtps_test.sh BIN_DIR
 set -euo pipefail
 bin_dir=$1
-domain=173
+domain=185
 if ! command -v tshark > /dev/null; then
   echo "tshark not installed (deploy/install-deps.sh installs it): skipped"
   exit 77
