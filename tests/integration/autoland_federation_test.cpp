@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -51,17 +52,25 @@ double last_value(const std::string& csv, const std::string& column) {
 TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
   const std::string dir = temp_dir("ils_autoland");
   const std::string yaml = std::string(FEDSIM_SOURCE_DIR) + "/deploy/ils-autoland.yaml";
+  std::map<std::string, std::string> progress;  // fedsim run's output per run
   auto fly = [&](const std::string& name, std::vector<std::string> extra) {
     const std::string out = dir + "/" + name;
-    std::vector<std::string> argv = {bin("fedsim"), "run", yaml, "--out", out, "--quiet", "--progress", "0"};
+    std::vector<std::string> argv = {bin("fedsim"), "run", yaml, "--out", out, "--quiet", "--progress", "2"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     ChildProcess fedsim(argv, dir + "/" + name + ".log");
     EXPECT_TRUE(fedsim.wait(300)) << fedsim.output();
     EXPECT_EQ(fedsim.exit_code(), 0) << fedsim.output();
     EXPECT_TRUE(std::filesystem::exists(out + "/ils_autoland.png")) << fedsim.output();
+    progress[name] = fedsim.output();
     return std::pair{read_file(out + "/fedsim_aircraft_state.csv"), read_file(out + "/fedsim_autopilot_state.csv")};
   };
   const auto [dds_aircraft, dds_autopilot] = fly("dds", {"--domain", "197"});  // a domain no other test uses (ctest -j runs them side by side)
+  // The progress lines the README shows: the flight federate's phase of flight, distance to go
+  // and modes (the glide slope lasts about 40 % of the run, the stop the last 12 %).
+  EXPECT_NE(progress["dds"].find("\n    flight: glide slope: "), std::string::npos) << progress["dds"];
+  EXPECT_NE(progress["dds"].find(" NM to the threshold, "), std::string::npos);
+  EXPECT_NE(progress["dds"].find("| MCP SPD | VOR/LOC | G/S"), std::string::npos);
+  EXPECT_NE(progress["dds"].find("flight: stopped: "), std::string::npos);
   const auto [local_aircraft, local_autopilot] = fly("in_process", {"--in-process"});
   EXPECT_EQ(std::count(dds_autopilot.begin(), dds_autopilot.end(), '\n'), 20001);  // header + every frame
   // Landed, stopped, the autopilot still engaged in ROLLOUT with no alert, the levers at idle.
