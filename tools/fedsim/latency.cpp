@@ -5,6 +5,7 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_catalogue.hpp"
+#include "common/util/child_process.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
 #include "fedsim/latency_detect.hpp"
@@ -252,50 +253,21 @@ void write_text(const fs::path& path, const std::string& text) {
   if (!f) throw std::runtime_error("cannot write " + path.string());
 }
 
-pid_t start_child(const std::vector<std::string>& args, const fs::path& log_path) {
-  const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (log_fd < 0) throw std::runtime_error("cannot write " + log_path.string());
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    dup2(log_fd, STDOUT_FILENO);
-    dup2(log_fd, STDERR_FILENO);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    std::fprintf(stderr, "cannot execute %s: %s\n", argv[0], std::strerror(errno));
-    _exit(127);
-  }
-  close(log_fd);
-  return pid;
-}
-
-/// Waits for the child up to `timeout_s`; then interrupts it (fedsim run stops its federation)
+/// Waits for the run up to `timeout_s`; then interrupts it (fedsim run stops its federation)
 /// and, 15 s later, kills it. Returns its exit status (128 + signal when killed) and whether
 /// the timeout struck.
-std::pair<int, bool> wait_bounded(pid_t pid, double timeout_s) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  int status = 0;
+std::pair<int, bool> wait_bounded(util::ChildProcess& run, double timeout_s) {
   bool timed_out = false;
-  bool interrupted = false;
-  auto kill_at = std::chrono::steady_clock::time_point::max();
-  while (true) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if (done == pid) break;
-    const auto now = std::chrono::steady_clock::now();
-    if (!interrupted && now > deadline) {
-      timed_out = interrupted = true;
-      kill(pid, SIGINT);
-      kill_at = now + std::chrono::seconds(15);
-    } else if (now > kill_at) {
-      kill(pid, SIGKILL);
-      kill_at = std::chrono::steady_clock::time_point::max();
+  if (!run.wait(timeout_s)) {
+    timed_out = true;
+    kill(run.pid(), SIGINT);
+    if (!run.wait(15.0)) {
+      run.kill_hard();
+      run.wait(5.0);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
-  return {code, timed_out};
+  const int code = run.exit_code();
+  return {code < 0 ? 128 - code : code, timed_out};
 }
 
 /// What `fedsim run` said went wrong: its lines naming a failed, lost or idle member, joined.
@@ -796,10 +768,10 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   out << "fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 1) << " Hz, " << o.steps << " elevator doublet(s) of "
       << fmt(o.amplitude, 2) << ", " << fmt(o.pulse_s, 3) << " s each way, domain " << o.dds.domain_id << "; "
       << total_frames(o) << " frames; federation in " << (dir / "run").string() << '\n';
-  const pid_t run = start_child({fedsim.string(), "run", (dir / "latency.yaml").string(), "--domain",
-                                 std::to_string(o.dds.domain_id), "--out", (dir / "run").string(), "--quiet",
-                                 "--progress", "0", "--duration", fmt(timeout_s, 1)},
-                                dir / "run.log");
+  util::ChildProcess run({fedsim.string(), "run", (dir / "latency.yaml").string(), "--domain",
+                          std::to_string(o.dds.domain_id), "--out", (dir / "run").string(), "--quiet",
+                          "--progress", "0", "--duration", fmt(timeout_s, 1)},
+                         (dir / "run.log").string());
   const auto [run_exit, timed_out] = wait_bounded(run, timeout_s + 10.0);
   const Seen seen = probe->finish();
   probe.reset();

@@ -1,6 +1,7 @@
 #include "fedsim/soak.hpp"
 
 #include "common/runtime/shutdown.hpp"
+#include "common/util/child_process.hpp"
 #include "common/util/cli_checks.hpp"
 #include "fedsim/launcher.hpp"
 
@@ -138,31 +139,6 @@ std::optional<nlohmann::json> last_summary_line(const fs::path& log) {
     if (j.is_object() && j.contains("frames")) found = std::move(j);
   }
   return found;
-}
-
-pid_t start_run(const std::vector<std::string>& args, const fs::path& log_path) {
-  const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (log_fd < 0) throw std::runtime_error("cannot write " + log_path.string());
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    dup2(log_fd, STDOUT_FILENO);
-    dup2(log_fd, STDERR_FILENO);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    std::fprintf(stderr, "cannot execute %s: %s\n", argv[0], std::strerror(errno));
-    _exit(127);
-  }
-  close(log_fd);
-  return pid;
-}
-
-int exit_status_of(int status) {
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return 1;
 }
 
 void read_recorded_topics(const fs::path& out_dir, SoakResult& result) {
@@ -372,7 +348,7 @@ int run_soak(const SoakOptions& options, std::ostream& out, std::ostream& err) {
   runtime::install_shutdown_handler();
   SoakResult result;
   const auto start = std::chrono::steady_clock::now();
-  const pid_t run_pid = start_run(args, run_log);
+  util::ChildProcess run(args, run_log.string());
   err << "fedsim soak: " << options.duration_s << " s realtime (RSS start after a "
       << options.warmup_s << " s warm-up); fedsim run's output in " << run_log.string() << "\n";
   const auto period = std::chrono::milliseconds(static_cast<long long>(options.sample_period_s * 1e3));
@@ -380,20 +356,17 @@ int run_soak(const SoakOptions& options, std::ostream& out, std::ostream& err) {
   // Every RSS sample, for a plot of growth over time (a plateau vs a leak).
   std::ofstream rss_csv(fs::path(options.out_dir) / "soak_rss.csv");
   rss_csv << "t_s,federate,rss_kb\n";
-  int status = 0;
   bool interrupted = false;
-  for (;;) {
-    const pid_t done = waitpid(run_pid, &status, WNOHANG);
-    if (done == run_pid) break;
+  while (!run.wait(0.0)) {
     if (runtime::shutdown_requested() && !interrupted) {
       interrupted = true;
-      kill(run_pid, SIGINT);  // fedsim run stops its federates cleanly and reports
+      kill(run.pid(), SIGINT);  // fedsim run stops its federates cleanly and reports
     }
     const auto now = std::chrono::steady_clock::now();
     if (now >= next_sample) {
       next_sample += period;
       const double t = std::chrono::duration<double>(now - start).count();
-      for (const auto& f : children_of(run_pid)) {
+      for (const auto& f : children_of(run.pid())) {
         const auto kb = rss_of(f.pid);
         if (!kb) continue;
         rss_csv << t << "," << f.name << "," << *kb << "\n";
@@ -406,7 +379,8 @@ int run_soak(const SoakOptions& options, std::ostream& out, std::ostream& err) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   result.measured_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.run_exit = exit_status_of(status);
+  // 128 + signal when a signal ended it, as a shell says
+  result.run_exit = run.exit_code() < 0 ? 128 - run.exit_code() : run.exit_code();
   result.timing_summary = last_summary_line(fs::path(options.out_dir) / "logs" / "timing.log");
   read_recorded_topics(options.out_dir, result);
   auto failures = soak_failures(result, options);
