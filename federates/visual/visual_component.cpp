@@ -303,6 +303,7 @@ bool VisualComponent::capture_due() {
   if (setup_.capture_png.empty() || captured_ || aircraft_state_.updates() == capture_state_seen_) return false;
   capture_state_seen_ = aircraft_state_.updates();
   const double height_m = aircraft_state_.latest()->height_agl_m();
+  if (!std::isfinite(height_m)) return false;  // a height nobody can descend through: no capture
   if (height_m > setup_.capture_agl_m) {
     capture_armed_ = true;  // a start below the height captures nothing: it never descends through it
     return false;
