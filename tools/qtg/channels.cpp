@@ -1,7 +1,6 @@
 #include "tools/qtg/channels.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <cmath>
 #include <fstream>
@@ -11,8 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <GeographicLib/LocalCartesian.hpp>
-
+#include "common/airports/runway_centreline.hpp"
 #include "common/airports/runway_table.hpp"
 #include "common/csv/csv_reader.hpp"
 
@@ -146,8 +144,10 @@ void append(Channels& out, const std::string& name, double t, double x) {
   s.x.push_back(x);
 }
 
-/// The aircraft-state channels, and with `runway` the runway channels, in one pass.
-Channels read_aircraft_state(const std::string& path, const RunwayFrame* runway) {
+/// The aircraft-state channels, and with `runway` the runway channels, in one pass (heights
+/// above `runway_elevation_m`, the landing threshold's).
+Channels read_aircraft_state(const std::string& path, const RunwayCentreline* runway,
+                             double runway_elevation_m = 0.0) {
   auto reader = csv::CsvReader::open(path);
   const auto time_col = reader.column("sim_time_s");
   std::vector<std::vector<std::size_t>> cols;
@@ -181,9 +181,9 @@ Channels read_aircraft_state(const std::string& path, const RunwayFrame* runway)
     append(out, "distance_ft", t, std::hypot(n - north0, e - east0));
     if (runway) {
       const double lat = row.number(lat_col), lon = row.number(lon_col);
-      append(out, "height_above_runway_ft", t, (row.number(alt_col) - runway->elevation_m()) / kMPerFt);
+      append(out, "height_above_runway_ft", t, (row.number(alt_col) - runway_elevation_m) / kMPerFt);
       append(out, "beyond_threshold_ft", t, runway->beyond_threshold_m(lat, lon) / kMPerFt);
-      append(out, "left_of_centreline_ft", t, runway->left_of_centreline_m(lat, lon) / kMPerFt);
+      append(out, "left_of_centreline_ft", t, runway->left_m(lat, lon) / kMPerFt);
     }
   }
   if (first) throw csv::CsvError(path, 0, "no data rows");
@@ -246,13 +246,16 @@ Channels channels_from_recording(const std::string& dir, const std::set<ChannelS
                                " (record its topic: fedsim record --topics ...)");
     return path;
   };
-  std::optional<RunwayFrame> frame;
+  std::optional<RunwayCentreline> centreline;
+  double elevation_m = 0.0;
   if (sources.count(ChannelSource::runway)) {
     if (!runway) throw std::runtime_error("the runway channels need the test's runway");
-    frame.emplace(*runway);
+    const RunwayTable table = RunwayTable::load_default();
+    centreline = RunwayCentreline::from_table(table, runway->airport, runway->runway);
+    elevation_m = table.at(runway->airport, runway->runway).elevation_m;
   }
   const std::string state = file(ChannelSource::aircraft_state);
-  Channels out = read_aircraft_state(state, frame ? &*frame : nullptr);
+  Channels out = read_aircraft_state(state, centreline ? &*centreline : nullptr, elevation_m);
   if (files) files->push_back({state, out.at("tas_kt").t});
   if (sources.count(ChannelSource::navigation_state)) {
     const std::string path = file(ChannelSource::navigation_state);
@@ -265,62 +268,6 @@ Channels channels_from_recording(const std::string& dir, const std::set<ChannelS
     if (files) files->push_back({path, std::move(times)});
   }
   return out;
-}
-
-std::string reciprocal_runway(const std::string& designator) {
-  std::size_t digits = 0;
-  while (digits < designator.size() && std::isdigit(static_cast<unsigned char>(designator[digits])))
-    ++digits;
-  const std::string suffix = designator.substr(digits);
-  if (digits == 0 || digits > 2 || suffix.size() > 1 ||
-      (suffix.size() == 1 && std::string("LCR").find(suffix) == std::string::npos))
-    throw std::invalid_argument("runway '" + designator + "': not a designator such as 28R");
-  const int number = std::stoi(designator.substr(0, digits));
-  if (number < 1 || number > 36)
-    throw std::invalid_argument("runway '" + designator + "': the number must be 1..36");
-  const int other = (number + 18 - 1) % 36 + 1;
-  const std::string side = suffix == "L" ? "R" : suffix == "R" ? "L" : suffix;
-  return std::to_string(other) + side;
-}
-
-RunwayFrame::RunwayFrame(const RunwaySpec& spec) {
-  const RunwayTable table = RunwayTable::load_default();
-  const RunwayEnd landing = table.at(spec.airport, spec.runway);
-  // the table may spell a one-digit end 1L or 01L: try both
-  const std::string far_name = reciprocal_runway(spec.runway);
-  auto far = table.find(spec.airport, far_name);
-  const bool one_digit = far_name.size() == 1 || !std::isdigit(static_cast<unsigned char>(far_name[1]));
-  if (!far && one_digit) far = table.find(spec.airport, "0" + far_name);
-  if (!far)
-    throw std::invalid_argument(spec.airport + " " + spec.runway + ": no opposite end " + far_name +
-                                " in the runway table (the centreline needs both ends)");
-  lat0_deg_ = landing.threshold_lat_rad * 180.0 / M_PI;
-  lon0_deg_ = landing.threshold_lon_rad * 180.0 / M_PI;
-  elevation_m_ = landing.elevation_m;
-  double east = 0, north = 0;
-  plane(far->threshold_lat_rad, far->threshold_lon_rad, east, north);
-  length_m_ = std::hypot(east, north);
-  if (!(length_m_ > 1.0)) throw std::invalid_argument(spec.airport + " " + spec.runway + ": the two ends coincide");
-  along_east_ = east / length_m_;
-  along_north_ = north / length_m_;
-}
-
-void RunwayFrame::plane(double lat_rad, double lon_rad, double& east_m, double& north_m) const {
-  const GeographicLib::LocalCartesian local(lat0_deg_, lon0_deg_, 0.0);
-  double up = 0;
-  local.Forward(lat_rad * 180.0 / M_PI, lon_rad * 180.0 / M_PI, 0.0, east_m, north_m, up);
-}
-
-double RunwayFrame::beyond_threshold_m(double lat_rad, double lon_rad) const {
-  double e = 0, n = 0;
-  plane(lat_rad, lon_rad, e, n);
-  return e * along_east_ + n * along_north_;
-}
-
-double RunwayFrame::left_of_centreline_m(double lat_rad, double lon_rad) const {
-  double e = 0, n = 0;
-  plane(lat_rad, lon_rad, e, n);
-  return -e * along_north_ + n * along_east_;  // the landing direction turned 90 deg left
 }
 
 Series read_reference_column(const std::string& path, const std::string& column) {

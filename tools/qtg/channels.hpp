@@ -53,8 +53,10 @@ Channels channels_from_state_csv(const std::string& path);
 
 /// Reads a recording folder (fedsim-fly's, or a `fedsim record` member's of a `fedsim run`):
 /// the aircraft state always, the navigation and autopilot state when `sources` has them, the
-/// runway channels when it has `runway` (then `runway` must be given). Throws
-/// std::runtime_error naming the file that is missing or bad, or the runway not in the table.
+/// runway channels when it has `runway` (then `runway` must be given; they are measured from
+/// its fedsim::RunwayCentreline, as fedsim-autoland-mc measures them). Throws
+/// std::runtime_error naming the file that is missing or bad, or std::invalid_argument naming
+/// the runway (or its opposite end) not in the table.
 /// `files`, when given, receives each file read with its sample times (to check the recording
 /// covers the run).
 struct RecordedFile {
@@ -64,29 +66,6 @@ struct RecordedFile {
 Channels channels_from_recording(const std::string& dir, const std::set<ChannelSource>& sources,
                                  const std::optional<RunwaySpec>& runway,
                                  std::vector<RecordedFile>* files = nullptr);
-
-/// The landing runway and its far end: distances along and across its centreline, in the
-/// local tangent plane at the landing threshold (as fedsim-autoland-mc measures them).
-class RunwayFrame {
- public:
-  /// Looks the runway and its reciprocal (28R -> 10L) up in data/nav/runways.csv; throws
-  /// std::invalid_argument naming what is missing.
-  explicit RunwayFrame(const RunwaySpec& spec);
-  double beyond_threshold_m(double lat_rad, double lon_rad) const;
-  double left_of_centreline_m(double lat_rad, double lon_rad) const;  // seen landing
-  double elevation_m() const { return elevation_m_; }
-  double length_m() const { return length_m_; }  // threshold to the far end's threshold
-
- private:
-  void plane(double lat_rad, double lon_rad, double& east_m, double& north_m) const;
-  double lat0_deg_ = 0, lon0_deg_ = 0, elevation_m_ = 0;
-  double along_east_ = 0, along_north_ = 0, length_m_ = 0;
-};
-
-/// The designator of a runway's other end, without a leading zero: 28R -> 10L, 01 -> 19,
-/// 9C -> 27C, 19R -> 1L; throws
-/// std::invalid_argument for a designator that is not 1..36 with an optional L, C or R.
-std::string reciprocal_runway(const std::string& designator);
 
 /// One column of a reference CSV against its time_s column (units in the headers: a column must
 /// be a known channel name). Throws csv::CsvError "file:line: column 'x': problem".

@@ -66,8 +66,8 @@ int run(const Options& o) {
   fs::create_directories(o.out);
   const nav::IlsApproach approach =
       afcs::with_course_through_threshold(afcs::load_default_ils_approach(o.airport, o.runway));
-  const afcs::RunwayCentreline runway =
-      afcs::RunwayCentreline::from_table(RunwayTable::load_default(), o.airport, o.runway);
+  const RunwayCentreline runway =
+      RunwayCentreline::from_table(RunwayTable::load_default(), o.airport, o.runway);
   const AircraftPack pack = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
   autoland::ScenarioRanges ranges;
   ranges.validate();

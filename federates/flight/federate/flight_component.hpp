@@ -28,6 +28,7 @@
 
 #include "flight/federate/replay_playback.hpp"
 
+#include "common/airports/runway_centreline.hpp"
 #include "common/airports/runway_table.hpp"
 #include "common/runtime/component.hpp"
 #include "flight/federate/autopilot_adapter.hpp"
@@ -51,7 +52,7 @@ struct FlightSetup {
   /// Host the AFCS (autopilot, flight director, autothrottle) with these parameters.
   std::optional<afcs::AfcsParameters> autopilot;
   /// The runway the progress note measures the distance to go to (--airport/--runway starts).
-  std::optional<afcs::RunwayCentreline> progress_runway;
+  std::optional<RunwayCentreline> progress_runway;
 };
 
 class FlightComponent final : public runtime::Component {

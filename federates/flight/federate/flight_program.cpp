@@ -84,7 +84,7 @@ FlightSetup prepare_flight(const FlightOptions& o) {
   // The runway of an --airport/--runway start: the progress line's distance to go.
   if (!o.start.airport.empty() && !o.start.runway.empty()) {
     setup.progress_runway =
-        afcs::RunwayCentreline::from_table(setup.runways, o.start.airport, o.start.runway);
+        RunwayCentreline::from_table(setup.runways, o.start.airport, o.start.runway);
   }
   return setup;
 }

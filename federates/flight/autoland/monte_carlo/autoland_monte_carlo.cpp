@@ -109,7 +109,7 @@ Scenario draw_scenario(std::mt19937_64& rng, const ScenarioRanges& r, const nav:
 }
 
 RunResult fly_scenario(const Scenario& s, const AircraftPack& pack, const nav::IlsApproach& approach,
-                       const afcs::RunwayCentreline& runway, double max_time_s,
+                       const RunwayCentreline& runway, double max_time_s,
                        std::unique_ptr<afcs::ClosedLoopFlight>* kept) {
   RunResult result;
   result.scenario = s;

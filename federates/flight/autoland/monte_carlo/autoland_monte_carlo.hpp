@@ -18,6 +18,7 @@
 //                  ALT HOLD, APP armed.
 #pragma once
 
+#include "common/airports/runway_centreline.hpp"
 #include "common/airports/runway_table.hpp"
 #include "common/navdb/nav_records.hpp"
 #include "flight/model/afcs/closed_loop_flight.hpp"
@@ -76,7 +77,7 @@ struct RunResult {
 /// Flies one scenario from its start to a stop, at most max_time_s. With `flight` given, the
 /// flight is kept there with its history (for a look at one landing), else nothing is recorded.
 RunResult fly_scenario(const Scenario& scenario, const AircraftPack& pack, const nav::IlsApproach& approach,
-                       const afcs::RunwayCentreline& runway, double max_time_s = 900.0,
+                       const RunwayCentreline& runway, double max_time_s = 900.0,
                        std::unique_ptr<afcs::ClosedLoopFlight>* flight = nullptr);
 
 /// min, 1st, 5th, 50th, 95th, 99th percentile, max (linear interpolation between order

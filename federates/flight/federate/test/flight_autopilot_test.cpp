@@ -149,7 +149,7 @@ TEST(FlightAutopilot, FliesTheIlsFromTheNavFederatesReadingsToAStopOnTheCentreli
   ASSERT_TRUE(r.touchdown) << "no touchdown in " << flown_s << " s";
   const msg::AircraftState& t = *r.touchdown;
   const auto runway =
-      afcs::RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
+      RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
   const double beyond_m = runway.beyond_threshold_m(t.latitude_rad(), t.longitude_rad());
   const double left_m = runway.left_m(t.latitude_rad(), t.longitude_rad());
   // The localizer course as data/nav/ils.csv publishes it (what the nav federate's receiver

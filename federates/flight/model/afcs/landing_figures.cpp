@@ -1,8 +1,5 @@
 #include "flight/model/afcs/landing_figures.hpp"
 
-#include <GeographicLib/LocalCartesian.hpp>
-
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -11,21 +8,6 @@ namespace fedsim::flight::afcs {
 
 namespace {
 
-/// "28R" -> "10L": the reciprocal designator (numbers differ by 18, L and R swap, C stays).
-std::string reciprocal_runway(const std::string& runway) {
-  std::size_t digits = 0;
-  while (digits < runway.size() && std::isdigit(static_cast<unsigned char>(runway[digits]))) ++digits;
-  if (digits == 0) throw std::invalid_argument("runway '" + runway + "' has no number");
-  int number = std::stoi(runway.substr(0, digits));
-  number = number > 18 ? number - 18 : number + 18;
-  std::string out = (number < 10 ? "0" : "") + std::to_string(number);
-  const std::string side = runway.substr(digits);
-  if (side == "L") out += "R";
-  else if (side == "R") out += "L";
-  else out += side;
-  return out;
-}
-
 std::string format(const char* pattern, double a, double b) {
   char text[160];
   std::snprintf(text, sizeof text, pattern, a, b);
@@ -33,44 +15,6 @@ std::string format(const char* pattern, double a, double b) {
 }
 
 }  // namespace
-
-RunwayCentreline::RunwayCentreline(double threshold_lat_rad, double threshold_lon_rad, double far_lat_rad,
-                                   double far_lon_rad)
-    : lat0_deg_(threshold_lat_rad * units::kRadToDeg), lon0_deg_(threshold_lon_rad * units::kRadToDeg) {
-  double east = 0.0, north = 0.0;
-  plane_coordinates(far_lat_rad, far_lon_rad, east, north);
-  length_m_ = std::hypot(east, north);
-  if (!(length_m_ > 1.0)) throw std::invalid_argument("RunwayCentreline: the two ends coincide");
-  along_east_ = east / length_m_;
-  along_north_ = north / length_m_;
-}
-
-RunwayCentreline RunwayCentreline::from_table(const RunwayTable& table, const std::string& airport,
-                                              const std::string& runway) {
-  const RunwayEnd landing = table.at(airport, runway);
-  const RunwayEnd far = table.at(airport, reciprocal_runway(runway));
-  return RunwayCentreline(landing.threshold_lat_rad, landing.threshold_lon_rad, far.threshold_lat_rad,
-                          far.threshold_lon_rad);
-}
-
-void RunwayCentreline::plane_coordinates(double lat_rad, double lon_rad, double& east_m, double& north_m) const {
-  const GeographicLib::LocalCartesian plane(lat0_deg_, lon0_deg_, 0.0);
-  double up = 0.0;
-  plane.Forward(lat_rad * units::kRadToDeg, lon_rad * units::kRadToDeg, 0.0, east_m, north_m, up);
-}
-
-double RunwayCentreline::beyond_threshold_m(double lat_rad, double lon_rad) const {
-  double e = 0.0, n = 0.0;
-  plane_coordinates(lat_rad, lon_rad, e, n);
-  return e * along_east_ + n * along_north_;
-}
-
-double RunwayCentreline::left_m(double lat_rad, double lon_rad) const {
-  double e = 0.0, n = 0.0;
-  plane_coordinates(lat_rad, lon_rad, e, n);
-  // Left of the landing direction (east, north) = (along rotated by +90 deg counter-clockwise).
-  return -e * along_north_ + n * along_east_;
-}
 
 LandingFigures landing_figures(const ClosedLoopFlight& flight, const RunwayCentreline& runway) {
   LandingFigures f;

@@ -1,39 +1,18 @@
 // The figures of an automatic landing and the limits they are judged against (the AFCS issue's,
 // for a 737 on a 61 m runway): touchdown within 27 ft (8.2 m) of the centreline, sink rate below
 // 6 ft/s, touchdown 200 to 2,700 ft beyond the threshold, wings level within 5 deg, stopped on
-// the runway. The centreline is the runway's own (threshold to the opposite threshold), an
-// independent reference to the localizer course the AFCS flies.
+// the runway. The centreline is the runway's own (threshold to the opposite threshold,
+// fedsim::RunwayCentreline in common/airports), an independent reference to the localizer course
+// the AFCS flies.
 #pragma once
 
-#include "common/airports/runway_table.hpp"
+#include "common/airports/runway_centreline.hpp"
 #include "flight/model/afcs/closed_loop_flight.hpp"
 
 #include <string>
 #include <vector>
 
 namespace fedsim::flight::afcs {
-
-/// A runway's centreline: from its landing threshold to the opposite end's threshold, in the
-/// local tangent plane at the landing threshold (GeographicLib LocalCartesian).
-class RunwayCentreline {
- public:
-  /// Throws std::invalid_argument when the two points coincide.
-  RunwayCentreline(double threshold_lat_rad, double threshold_lon_rad, double far_lat_rad, double far_lon_rad);
-  /// The landing end `runway` of `airport` and its opposite end in the table (e.g. KSFO 28R and
-  /// 10L: designators differ by 18, L and R swapped); throws std::invalid_argument when either is missing.
-  static RunwayCentreline from_table(const RunwayTable& table, const std::string& airport, const std::string& runway);
-  double length_m() const { return length_m_; }
-  /// Distance beyond the threshold along the centreline [m].
-  double beyond_threshold_m(double lat_rad, double lon_rad) const;
-  /// Distance left of the centreline, seen landing [m].
-  double left_m(double lat_rad, double lon_rad) const;
-
- private:
-  void plane_coordinates(double lat_rad, double lon_rad, double& east_m, double& north_m) const;
-  double lat0_deg_ = 0.0, lon0_deg_ = 0.0;
-  double along_east_ = 0.0, along_north_ = 0.0;  // unit vector of the landing direction
-  double length_m_ = 0.0;
-};
 
 struct LandingFigures {
   bool touched_down = false;

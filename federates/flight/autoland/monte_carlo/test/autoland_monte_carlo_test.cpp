@@ -83,7 +83,7 @@ TEST(AutolandMonteCarlo, BadRangesAreNamed) {
 }
 
 TEST(AutolandMonteCarlo, SmokeRunOfThreeLandings) {
-  const auto runway = afcs::RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
+  const auto runway = RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
   const AircraftPack pack = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
   std::vector<RunResult> results;
   for (const Scenario& s : draws(1, 3)) results.push_back(fly_scenario(s, pack, ksfo_28r(), runway));
