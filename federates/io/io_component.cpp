@@ -1,4 +1,6 @@
 #include "io/io_component.hpp"
+
+#include "io/model/stall_entry_pilot.hpp"
 #include "common/util/cli_checks.hpp"
 
 #include "io/devices/device_source.hpp"
@@ -76,11 +78,13 @@ void to_message(const ControlInputs& in, const McpButtonCounter& buttons, msg::P
 }
 
 IoComponent::IoComponent(std::string name, std::unique_ptr<InputSource> source, int aircraft_id,
-                         std::string_view controls_qos, bool loader_in_the_loop)
+                         std::string_view controls_qos, bool loader_in_the_loop, const ControlInputs& initial)
     : Component(std::move(name)),
       pilot_controls_(writes(runtime::topics::pilot_controls, controls_qos)),
-      source_(std::move(source)) {
+      source_(std::move(source)),
+      controls_(initial) {
   if (loader_in_the_loop) control_loading_state_ = &reads(runtime::topics::control_loading_state);
+  if (source_->closed_loop()) aircraft_state_ = &reads(runtime::topics::aircraft_state);
   sample_.aircraft_id(static_cast<uint16_t>(aircraft_id));
   log().info("input source: {}{}", source_->describe(),
              loader_in_the_loop ? "; the control loader in the loop (primaries from its positions)" : "");
@@ -113,7 +117,23 @@ void IoComponent::watch_validity(bool valid) {
   }
 }
 
+void IoComponent::show_the_pilot_the_aircraft() {
+  const msg::AircraftState* s = aircraft_state_->latest();
+  if (s == nullptr) return;  // before the flight federate's first state: nothing to fly by
+  PilotObservation seen;
+  seen.sim_time_s = s->stamp().sim_time_s();
+  seen.cas_mps = s->air().cas_mps();
+  seen.phi_rad = s->phi_rad();
+  seen.theta_rad = s->theta_rad();
+  seen.p_radps = s->omega_body_radps()[0];
+  seen.q_radps = s->omega_body_radps()[1];
+  seen.elevator = s->controls().elevator();
+  seen.elevator_trim = s->controls().pitch_trim();
+  source_->observe(seen);
+}
+
 void IoComponent::step(const runtime::FrameContext& frame) {
+  if (aircraft_state_ != nullptr) show_the_pilot_the_aircraft();
   source_->sample(frame.sim_time_s, controls_);
   watch_validity(source_->valid());
   mcp_buttons_.update(controls_);

@@ -33,8 +33,11 @@ void to_message(const ControlInputs& in, const McpButtonCounter& buttons, msg::P
 class IoComponent final : public runtime::Component {
  public:
   /// `controls_qos` overrides the catalogue's profile of fedsim/pilot_controls.
+  /// `initial` is the cockpit before the source drives a channel (fedsim-fly: the start's
+  /// trimmed controls and configuration).
   IoComponent(std::string name, std::unique_ptr<InputSource> source, int aircraft_id,
-              std::string_view controls_qos = {}, bool loader_in_the_loop = false);
+              std::string_view controls_qos = {}, bool loader_in_the_loop = false,
+              const ControlInputs& initial = default_controls());
   void step(const runtime::FrameContext& frame) override;
 
  private:
@@ -45,13 +48,17 @@ class IoComponent final : public runtime::Component {
   // reads fedsim/control_loading_state (lockstep input) with --loader-in-the-loop only: its
   // positions are the primaries this federate reports.
   runtime::Input<msg::ControlLoadingState>* control_loading_state_ = nullptr;
+  // reads fedsim/aircraft_state (lockstep input) for a closed-loop source only (a test pilot):
+  // the state of the frame before, which the pilot sees before it moves the controls.
+  runtime::Input<msg::AircraftState>* aircraft_state_ = nullptr;
 
   void watch_validity(bool valid);
   void take_loader_positions();
+  void show_the_pilot_the_aircraft();
 
   std::unique_ptr<InputSource> source_;
   bool source_valid_ = true;
-  ControlInputs controls_ = default_controls();
+  ControlInputs controls_;
   McpButtonCounter mcp_buttons_;
   msg::PilotControls sample_;
 };

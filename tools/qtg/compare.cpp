@@ -192,6 +192,17 @@ CheckResult evaluate_check(const Check& check, const Channels& flown, const Seri
       score(r, e->x, e->t);
       return r;
     }
+    case Measure::stall_speed_1g: {
+      const auto nz = flown.find("nz_g");
+      const auto stall = stall_speed_1g(r.simulated, nz == flown.end() ? Series{} : nz->second, from, to, why);
+      if (!stall) {
+        r.problem = why;
+        return r;
+      }
+      r.marks = {{stall->t, stall->cas_kt, false}};
+      score(r, stall->vs1g_kt, stall->t);
+      return r;
+    }
     case Measure::max_abs: {
       const auto hi = window_max(r.simulated, from, to), lo = window_min(r.simulated, from, to);
       if (!hi || !lo) {

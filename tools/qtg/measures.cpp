@@ -133,6 +133,36 @@ std::optional<Extreme> window_max(const Series& s, double from_s, double to_s) {
   return Extreme{s.t[i], s.x[i]};
 }
 
+std::optional<StallPoint> stall_speed_1g(const Series& cas_kt, const Series& nz, double from_s, double to_s,
+                                         std::string& why, double drop_fraction) {
+  if (nz.empty()) {
+    why = "no load factor (nz_g) recorded";
+    return std::nullopt;
+  }
+  std::optional<StallPoint> peak;
+  double peak_lift = 0;  // n_z / V^2 at the running maximum
+  for (std::size_t i = 0; i < cas_kt.t.size(); ++i) {
+    const double t = cas_kt.t[i], v = cas_kt.x[i];
+    if (t < from_s || t > to_s || !(v >= 1.0)) continue;
+    const double n = interpolate(nz, t);
+    const double lift = n / (v * v);
+    if (!peak || lift > peak_lift) {
+      peak_lift = lift;
+      peak = StallPoint{t, v, n, 0};
+    } else if (lift < (1.0 - drop_fraction) * peak_lift) {
+      if (!(peak->nz > 0)) break;
+      peak->vs1g_kt = peak->cas_kt / std::sqrt(peak->nz);
+      return peak;
+    }
+  }
+  why = peak && !(peak->nz > 0)
+            ? "the load factor at the lift coefficient's maximum is not positive"
+            : "the load-factor-corrected lift coefficient (nz / V^2) never fell " +
+                  std::to_string(static_cast<int>(drop_fraction * 100 + 0.5)) +
+                  " % below a maximum: no stall in the window";
+  return std::nullopt;
+}
+
 double lanchester_period_s(double tas_mps, double g_mps2) {
   return M_PI * std::sqrt(2.0) * tas_mps / g_mps2;
 }

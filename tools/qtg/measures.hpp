@@ -44,6 +44,21 @@ struct Extreme {
 std::optional<Extreme> window_min(const Series& s, double from_s, double to_s);
 std::optional<Extreme> window_max(const Series& s, double from_s, double to_s);
 
+/// The 1 g stall speed of 14 CFR 25.103: V_CLmax / sqrt(n_z), V_CLmax the calibrated airspeed
+/// at which the load-factor-corrected lift coefficient n_z W / (q S) is first a maximum in a
+/// stall entry. W and S are constant and q = rho_0 V_c^2 / 2 (calibrated airspeed, low Mach), so
+/// that coefficient is proportional to n_z / V_c^2. "First a maximum": the running maximum in
+/// [from_s, to_s] once n_z / V_c^2 has fallen `drop_fraction` below it (the g-break, or the
+/// recovery after an entry that ends at the elevator's stop). Samples below 1 kt are skipped.
+struct StallPoint {
+  double t = 0;        // when the corrected lift coefficient peaked [s]
+  double cas_kt = 0;   // V_CLmax
+  double nz = 0;       // n_z then
+  double vs1g_kt = 0;  // V_CLmax / sqrt(n_z)
+};
+std::optional<StallPoint> stall_speed_1g(const Series& cas_kt, const Series& nz, double from_s, double to_s,
+                                         std::string& why, double drop_fraction = 0.03);
+
 /// Lanchester's phugoid period T = pi sqrt(2) V / g (V true airspeed in m/s), seed ch. 7 /
 /// Etkin & Reid, Dynamics of Flight (1996) section 6.3.
 double lanchester_period_s(double tas_mps, double g_mps2 = 9.80665);

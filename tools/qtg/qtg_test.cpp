@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "common/airports/runway_centreline.hpp"
 #include "common/util/config_node.hpp"
 #include "tools/qtg/channels.hpp"
 #include "tools/qtg/measures.hpp"
@@ -34,6 +35,7 @@ std::string measure_name(Measure m) {
     case Measure::minimum: return "minimum";
     case Measure::maximum: return "maximum";
     case Measure::max_abs: return "max_abs";
+    case Measure::stall_speed_1g: return "stall_speed_1g";
   }
   return "?";
 }
@@ -51,7 +53,8 @@ namespace {
 
 const std::vector<std::string> kMeasures = {"time_history", "period",     "damping_ratio",
                                             "time_to",      "value_at",   "value_when",
-                                            "minimum",      "maximum",    "max_abs"};
+                                            "minimum",      "maximum",    "max_abs",
+                                            "stall_speed_1g"};
 
 Measure parse_measure(const std::string& s) {
   for (std::size_t i = 0; i < kMeasures.size(); ++i)
@@ -85,7 +88,7 @@ std::string recorded_channel(const ConfigNode& node, const std::string& key, con
 
 StartCondition parse_start(const ConfigNode& n) {
   n.reject_unknown_keys({"trim", "alt_ft", "ktas", "kcas", "heading_deg", "gamma_deg", "bank_deg",
-                         "flaps", "throttle", "runway_elevation_m"});
+                         "flaps", "throttle", "runway_elevation_m", "gear_down"});
   StartCondition s;
   s.trim = n.choice("trim", {"level", "climb", "turn", "ground"});
   s.alt_ft = n.number_or("alt_ft", 4000, -1000, 60000);
@@ -104,6 +107,8 @@ StartCondition parse_start(const ConfigNode& n) {
   s.throttle = n.number_or("throttle", 0, 0, 1);
   if (s.throttle != 0 && flight) n.fail_at("throttle", "only for trim: ground (flight trims solve it)");
   s.runway_elevation_m = n.number_or("runway_elevation_m", 0, -500, 5000);
+  s.gear_down = n.boolean_or("gear_down", false);
+  if (s.gear_down && !flight) n.fail_at("gear_down", "only for flight trims (a ground start has its gear down)");
   return s;
 }
 
@@ -201,6 +206,8 @@ Check parse_check(const ConfigNode& n, const QtgTest& test) {
   if (crossing) c.threshold = n.number("threshold");
   needs("when_channel", c.measure == Measure::value_when);
   if (c.measure == Measure::value_when) c.when_channel = recorded_channel(n, "when_channel", test);
+  if (c.measure == Measure::stall_speed_1g && c.channel != "cas_kt")
+    n.fail_at("channel", "stall_speed_1g is a calibrated airspeed: channel cas_kt (it reads nz_g too)");
   if (n.has("while")) {
     if (c.measure != Measure::minimum && c.measure != Measure::maximum && c.measure != Measure::max_abs)
       n.fail_at("while", "only for the measures minimum, maximum and max_abs");
@@ -275,7 +282,8 @@ QtgTest load_test(const std::string& path, const std::vector<std::string>& searc
     r.reject_unknown_keys({"airport", "runway"});
     RunwaySpec spec{r.string("airport"), r.string("runway")};
     try {
-      RunwayFrame frame(spec);  // both ends in the table, now rather than after the flight
+      // both ends in the table (the runway channels' centreline), now rather than after the flight
+      RunwayCentreline::from_table(RunwayTable::load_default(), spec.airport, spec.runway);
     } catch (const std::exception& e) {
       r.fail(e.what());
     }
@@ -283,9 +291,20 @@ QtgTest load_test(const std::string& path, const std::vector<std::string>& searc
   }
   if (root.has("inputs")) {
     const ConfigNode in = root.child("inputs");
-    in.reject_unknown_keys({"profile", "relative"});
-    t.inputs = resolve(in, "profile", base, search_dirs);
-    t.inputs_relative = in.boolean_or("relative", true);
+    in.reject_unknown_keys({"profile", "relative", "pilot", "entry_rate_kt_per_s", "throttle"});
+    if (in.has("pilot")) {
+      t.pilot = in.choice("pilot", {"stall_entry"});
+      t.pilot_entry_rate_kt_per_s = in.number_or("entry_rate_kt_per_s", 1.0, 0.1, 5.0);
+      t.pilot_throttle = in.number_or("throttle", 0.0, 0.0, 1.0);
+    } else {
+      for (const char* k : {"entry_rate_kt_per_s", "throttle"})
+        if (in.has(k)) in.fail_at(k, "a setting of the test pilot: needs pilot: stall_entry");
+      if (!in.has("profile")) in.fail("inputs needs a profile, a pilot, or both");
+    }
+    if (in.has("profile")) t.inputs = resolve(in, "profile", base, search_dirs);
+    t.inputs_relative = in.boolean_or("relative", t.pilot.empty());
+    if (!t.pilot.empty() && t.inputs_relative)
+      in.fail_at("relative", "the test pilot flies absolute controls (relative: false)");
   }
   t.duration_s = root.number("duration_s", 0.1, 3600);
   t.rate_hz = root.number("rate_hz", 1, 1000);

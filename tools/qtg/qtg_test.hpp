@@ -18,6 +18,7 @@ struct StartCondition {
   std::optional<double> ktas, kcas;
   double heading_deg = 0, gamma_deg = 0, bank_deg = 0, flaps = 0, throttle = 0;
   double runway_elevation_m = 0;
+  bool gear_down = false;  // flight trims: the gear lever down (fedsim-fly --gear-down)
 };
 
 /// A Part 60 tolerance: +/- an absolute amount in the compared quantity's unit, or a percentage
@@ -41,6 +42,7 @@ enum class Measure {
   minimum,
   maximum,
   max_abs,        // the largest |channel| over the window (deviations in dots)
+  stall_speed_1g, // 14 CFR 25.103: V_CLmax / sqrt(n_z) at the first maximum of n_z / V^2
 };
 
 /// Samples a check keeps: those where `channel` (interpolated at the sample's time) lies within
@@ -101,6 +103,11 @@ struct QtgTest {
   std::optional<RunwaySpec> runway;  // needed by the runway channels
   std::string inputs;  // resolved profile path, or empty
   bool inputs_relative = true;
+  /// A closed-loop test pilot flown by fedsim-fly (`inputs: {pilot: stall_entry, ...}`): empty,
+  /// or "stall_entry" with its entry rate and throttle.
+  std::string pilot;
+  double pilot_entry_rate_kt_per_s = 1.0;
+  double pilot_throttle = 0.0;
   double duration_s = 0, rate_hz = 0;
   Reference reference;
   std::vector<Check> checks;

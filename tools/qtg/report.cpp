@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <sstream>
 
@@ -233,14 +234,24 @@ std::string html_report(const std::vector<TestResult>& results, const ReportInfo
       if (t.start.trim != "ground") start << ", " << num(t.start.alt_ft) << " ft";
       if (t.start.ktas) start << ", " << num(*t.start.ktas) << " KTAS";
       if (t.start.kcas) start << ", " << num(*t.start.kcas) << " KCAS";
-      start << ", heading " << num(t.start.heading_deg) << "°, flaps " << num(t.start.flaps);
+      start << ", heading " << num(t.start.heading_deg) << "°, flaps " << num(t.start.flaps)
+            << (t.start.gear_down ? ", gear down" : "");
       if (t.start.trim == "climb") start << ", flight path " << num(t.start.gamma_deg) << "°";
       if (t.start.trim == "turn") start << ", bank " << num(t.start.bank_deg) << "°";
       if (t.start.trim == "ground")
         start << ", throttle " << num(t.start.throttle) << ", runway " << num(t.start.runway_elevation_m) << " m";
       row("start", start.str());
-      row("inputs", t.inputs.empty() ? "controls held at the start"
-                                     : t.inputs + (t.inputs_relative ? " (offsets about the start)" : " (absolute)"));
+      std::string inputs = t.inputs.empty() ? (t.pilot.empty() ? "controls held at the start" : "")
+                                            : t.inputs + (t.inputs_relative ? " (offsets about the start)" : " (absolute)");
+      if (t.pilot == "stall_entry") {
+        char pilot[200];
+        std::snprintf(pilot, sizeof pilot,
+                      "%sthe stall-entry test pilot: wings level, airspeed down %.2g kt/s at throttle %.2g until "
+                      "the stall is identified, then the recovery",
+                      inputs.empty() ? "" : ", then ", t.pilot_entry_rate_kt_per_s, t.pilot_throttle);
+        inputs += pilot;
+      }
+      row("inputs", inputs);
     }
     if (t.runway) row("runway", t.runway->airport + " " + t.runway->runway + " (data/nav/runways.csv)");
     if (r.from_recording) row("recording", r.out_dir + " (evaluated from this recording, not flown by the QTG)");

@@ -35,10 +35,15 @@ std::vector<std::string> fly_arguments(const QtgTest& t, const std::string& out_
     if (s.trim == "turn") a.insert(a.end(), {"--bank-deg", text(s.bank_deg)});
     if (s.runway_elevation_m != 0)
       a.insert(a.end(), {"--runway-elevation-m", text(s.runway_elevation_m)});
+    if (s.gear_down) a.push_back("--gear-down");
   }
   if (!t.inputs.empty()) {
     a.insert(a.end(), {"--inputs", t.inputs});
     if (t.inputs_relative) a.push_back("--inputs-relative");
+  }
+  if (t.pilot == "stall_entry") {
+    a.insert(a.end(), {"--pilot", "stall-entry", "--entry-rate-kt-s", text(t.pilot_entry_rate_kt_per_s),
+                       "--pilot-throttle", text(t.pilot_throttle)});
   }
   a.insert(a.end(), {"--duration", text(t.duration_s), "--rate", text(t.rate_hz), "--out", out_dir,
                      "--quiet"});

@@ -32,6 +32,8 @@ constexpr double kProgressIntervalS = 2.0;  // wall-clock seconds between progre
 struct Prepared {
   FlightSetup setup;  // moved into the flight component once the trim is known good
   std::unique_ptr<FlightComponent> flight;
+  std::unique_ptr<io::InputSource> source;  // the profile and/or the pilot, if any
+  const io::StallEntryPilot* pilot = nullptr;  // owned by `source`, then by `io`
   std::unique_ptr<io::IoComponent> io;
 };
 
@@ -39,12 +41,20 @@ struct Prepared {
 Prepared prepare(FlyOptions& o) {
   check_fly_options(o);
   Prepared p;
-  if (!o.inputs.empty()) {
-    auto profile = std::make_unique<io::InputProfile>(io::InputProfile::load_file(o.inputs));
-    p.io = std::make_unique<io::IoComponent>("io", std::move(profile), o.flight.aircraft_id);
-  }
+  p.source = make_fly_input_source(o, &p.pilot);  // a bad profile fails here, before the trim
   p.setup = prepare_flight(o.flight);
   return p;
+}
+
+/// The test pilot's verdict: when and at what speed it identified the stall, and by what.
+void report_the_stall(const io::StallEntryPilot& pilot) {
+  if (pilot.phase() == io::StallEntryPhase::kStalled) {
+    std::fprintf(stderr, "fedsim-fly: stall entry: stall identified at %.2f s, %.1f KCAS (%s); recovery flown\n",
+                 pilot.stall_time_s(), pilot.stall_cas_mps() * 3600.0 / 1852.0, pilot.stall_indication().c_str());
+  } else {
+    std::fprintf(stderr, "fedsim-fly: stall entry: no stall identified by the end of the run (phase %s)\n",
+                 io::to_string(pilot.phase()));
+  }
 }
 
 int fly(const FlyOptions& o, Prepared& p) {
@@ -82,6 +92,7 @@ int fly(const FlyOptions& o, Prepared& p) {
     std::fprintf(stderr, "fedsim-fly: %.1f s flown in %.2f s (%.0fx real time) -> %s\n",
                  o.duration_s, wall_s, o.duration_s / std::max(wall_s, 1e-9), o.out_dir.c_str());
   }
+  if (p.pilot) report_the_stall(*p.pilot);
   if (composition.fault_count() > 0) {
     for (const runtime::Component* c : {static_cast<runtime::Component*>(p.flight.get()),
                                         static_cast<runtime::Component*>(p.io.get())}) {
@@ -120,6 +131,12 @@ int main(int argc, char** argv) {
   try {
     if (prepared.setup.start.trim) std::cout << trim_json(*prepared.setup.start.trim) << std::endl;
     require_trimmed(prepared.setup);
+    if (prepared.source) {
+      // The I/O component starts from the start's cockpit, so an undriven channel keeps it.
+      prepared.io = std::make_unique<io::IoComponent>(
+          "io", std::move(prepared.source), options.flight.aircraft_id, std::string_view{}, false,
+          cockpit_at_start(prepared.setup.start.controls, options.flight.controls == "relative"));
+    }
     prepared.flight = std::make_unique<FlightComponent>("flight", std::move(prepared.setup),
                                                         options.flight.state_qos);
   } catch (const runtime::ProgramError& e) {

@@ -11,6 +11,8 @@
 
 namespace fedsim::io {
 
+struct PilotObservation;  // stall_entry_pilot.hpp: what a closed-loop source sees of the aircraft
+
 class InputSource {
  public:
   virtual ~InputSource() = default;
@@ -23,6 +25,10 @@ class InputSource {
   /// leaves are not the pilot's. The I/O federate then sets DISCRETE_INPUTS_INVALID and the
   /// flight federate holds the last valid controls.
   virtual bool valid() const { return true; }
+  /// True for a source that flies the aircraft closed loop (a test pilot): the I/O component
+  /// then reads the aircraft's state and calls observe() before each sample().
+  virtual bool closed_loop() const { return false; }
+  virtual void observe(const PilotObservation& /*aircraft*/) {}
 };
 
 /// Sources sampled in order, each over the channels the ones before it wrote (a profile for
@@ -43,6 +49,15 @@ class LayeredSource final : public InputSource {
       if (!layer->valid()) return false;
     }
     return true;
+  }
+  bool closed_loop() const override {
+    for (const auto& layer : layers_) {
+      if (layer->closed_loop()) return true;
+    }
+    return false;
+  }
+  void observe(const PilotObservation& aircraft) override {
+    for (auto& layer : layers_) layer->observe(aircraft);
   }
 
  private:

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/airports/runway_centreline.hpp"
 #include "common/util/config_node.hpp"
 #include "tools/qtg/channels.hpp"
 #include "tools/qtg/compare.hpp"
@@ -192,6 +193,91 @@ TEST(QtgMeasures, CrossingAndExtremes) {
   EXPECT_NEAR(lanchester_period_s(100.0), M_PI * std::sqrt(2.0) * 100 / 9.80665, 1e-12);
 }
 
+/// A synthetic 1 g stall entry: V falls 1 kt/s from 80 kt with n_z = 1 while the lift
+/// coefficient (n_z / V^2) can follow, up to C_Lmax at `stall_kt`; then the lift breaks (n_z falls
+/// with the lift coefficient held at 85 % of its maximum) and the speed keeps falling.
+Channels stall_entry(double stall_kt, double nz_at_peak = 1.0) {
+  Channels c;
+  for (int i = 0; i <= 600; ++i) {
+    const double t = i * 0.1, v = 80.0 - t;
+    double nz = 1.0;
+    if (v <= stall_kt) nz = 0.85 * nz_at_peak * (v * v) / (stall_kt * stall_kt);
+    if (std::fabs(v - stall_kt) < 1e-9) nz = nz_at_peak;
+    c["cas_kt"].t.push_back(t), c["cas_kt"].x.push_back(v);
+    c["nz_g"].t.push_back(t), c["nz_g"].x.push_back(nz);
+  }
+  return c;
+}
+
+TEST(QtgMeasures, StallSpeedIsTheSpeedAtTheFirstMaximumOfTheCorrectedLift) {
+  std::string why;
+  const Channels flown = stall_entry(50.0);
+  const auto s = stall_speed_1g(flown.at("cas_kt"), flown.at("nz_g"), 0, 60, why);
+  ASSERT_TRUE(s) << why;
+  EXPECT_NEAR(s->cas_kt, 50.0, 1e-9);
+  EXPECT_NEAR(s->t, 30.0, 1e-9);
+  EXPECT_NEAR(s->vs1g_kt, 50.0, 1e-9);
+  // At 1.21 g at the peak (a pull), the 1 g speed is V / 1.1: the load-factor correction.
+  const Channels pulled = stall_entry(55.0, 1.21);
+  const auto p = stall_speed_1g(pulled.at("cas_kt"), pulled.at("nz_g"), 0, 60, why);
+  ASSERT_TRUE(p) << why;
+  EXPECT_NEAR(p->vs1g_kt, 55.0 / 1.1, 1e-6);
+  // Negative controls: an entry that never stalls (n_z = 1 throughout) has no maximum that
+  // falls away, and a window ending before the break finds none.
+  Channels steady = stall_entry(5.0);
+  EXPECT_FALSE(stall_speed_1g(steady.at("cas_kt"), steady.at("nz_g"), 0, 60, why));
+  EXPECT_NE(why.find("no stall in the window"), std::string::npos) << why;
+  EXPECT_FALSE(stall_speed_1g(flown.at("cas_kt"), flown.at("nz_g"), 0, 29, why));
+  EXPECT_FALSE(stall_speed_1g(flown.at("cas_kt"), Series{}, 0, 60, why));
+  EXPECT_NE(why.find("nz_g"), std::string::npos) << why;
+}
+
+TEST(QtgTestFile, TheStallEntryPilotAndTheStallMeasure) {
+  const std::string stall = replace(replace(kValid, "duration_s:", "inputs: {pilot: stall_entry, entry_rate_kt_per_s: 0.8, throttle: 0.1}\nduration_s:"),
+                                    R"(  - name: phugoid period
+    channel: tas_kt
+    measure: period
+    from_s: 5
+    reference_formula: lanchester_period
+    tolerance: {percent: 10})",
+                                    R"(  - name: stall speed
+    channel: cas_kt
+    measure: stall_speed_1g
+    from_s: 10
+    reference_value: 40
+    tolerance: {plus_minus: 3, unit: kt})");
+  const QtgTest t = load_test(write("stall.yaml", replace(stall, "ktas: 100}", "ktas: 100, gear_down: true}")));
+  EXPECT_EQ(t.pilot, "stall_entry");
+  EXPECT_FALSE(t.inputs_relative);
+  EXPECT_TRUE(t.start.gear_down);
+  const auto a = fly_arguments(t, "/tmp/x");
+  const auto has = [&](const std::string& k, const std::string& v) {
+    for (std::size_t i = 0; i + 1 < a.size(); ++i)
+      if (a[i] == k && a[i + 1] == v) return true;
+    return false;
+  };
+  EXPECT_TRUE(has("--pilot", "stall-entry"));
+  const auto number_after = [&](const std::string& k) {
+    const auto at = std::find(a.begin(), a.end(), k);
+    return at == a.end() || at + 1 == a.end() ? -1.0 : std::stod(*(at + 1));
+  };
+  EXPECT_DOUBLE_EQ(number_after("--entry-rate-kt-s"), 0.8);
+  EXPECT_DOUBLE_EQ(number_after("--pilot-throttle"), 0.1);
+  EXPECT_NE(std::find(a.begin(), a.end(), "--gear-down"), a.end());
+  EXPECT_EQ(std::find(a.begin(), a.end(), "--inputs-relative"), a.end());
+  // Refusals, by name.
+  std::string e = load_error(replace(stall, "pilot: stall_entry", "pilot: autopilot"));
+  EXPECT_NE(e.find("inputs.pilot"), std::string::npos) << e;
+  e = load_error(replace(stall, "entry_rate_kt_per_s: 0.8", "entry_rate_kt_per_s: .nan"));
+  EXPECT_NE(e.find("entry_rate_kt_per_s"), std::string::npos) << e;
+  e = load_error(replace(stall, "throttle: 0.1}", "throttle: 0.1, relative: true}"));
+  EXPECT_NE(e.find("absolute controls"), std::string::npos) << e;
+  e = load_error(replace(stall, "channel: cas_kt", "channel: tas_kt"));
+  EXPECT_NE(e.find("stall_speed_1g is a calibrated airspeed"), std::string::npos) << e;
+  e = load_error(replace(kValid, "duration_s:", "inputs: {throttle: 0}\nduration_s:"));
+  EXPECT_NE(e.find("needs pilot: stall_entry"), std::string::npos) << e;
+}
+
 TEST(QtgCompare, TimeHistoryPassesInsideTheBandAndFailsOutside) {
   Check c;
   c.name = "airspeed";
@@ -368,32 +454,34 @@ TEST(QtgFederation, FormatErrorsAreNamed) {
                 .find("only for the measures"), std::string::npos);
 }
 
-TEST(QtgFederation, ReciprocalRunwaysAndTheRunwayFrame) {
-  EXPECT_EQ(reciprocal_runway("28R"), "10L");
-  EXPECT_EQ(reciprocal_runway("10L"), "28R");
-  EXPECT_EQ(reciprocal_runway("19R"), "1L");
-  EXPECT_EQ(reciprocal_runway("01"), "19");
-  EXPECT_EQ(reciprocal_runway("9C"), "27C");
-  EXPECT_EQ(reciprocal_runway("36"), "18");
-  EXPECT_THROW(reciprocal_runway("37"), std::invalid_argument);
-  EXPECT_THROW(reciprocal_runway("28X"), std::invalid_argument);
-  EXPECT_THROW(reciprocal_runway("R"), std::invalid_argument);
+TEST(QtgFederation, TheRunwayChannelsMeasureFromTheRunwayCentreline) {
+  // The runway channels are fedsim::RunwayCentreline's (common/airports, as fedsim-autoland-mc
+  // and the AFCS's landing figures measure; its own tests: runway_centreline_test.cpp).
   // KSFO 28R (data/nav/runways.csv): runway end 37.613538 N 122.35716 W, 4 m, threshold
   // displaced 91 m; 10L's end 37.628742 N 122.39341 W: 3618 m end to end, so the centreline
   // from the 28R threshold is 3527 m (11,572 ft), heading 297.8 deg true
-  const RunwayFrame frame({"KSFO", "28R"});
+  const fedsim::RunwayTable table = fedsim::RunwayTable::load_default();
+  const auto frame = fedsim::RunwayCentreline::from_table(table, "KSFO", "28R");
   const double d2r = M_PI / 180;
   EXPECT_NEAR(frame.length_m(), 3527, 2);
-  EXPECT_NEAR(frame.elevation_m(), 4.0, 1e-9);
+  EXPECT_NEAR(table.at("KSFO", "28R").elevation_m, 4.0, 1e-9);  // height_above_runway_ft's zero
   EXPECT_NEAR(frame.beyond_threshold_m(37.613538 * d2r, -122.35716 * d2r), -91, 0.5);
-  EXPECT_NEAR(frame.left_of_centreline_m(37.613538 * d2r, -122.35716 * d2r), 0, 0.5);
+  EXPECT_NEAR(frame.left_m(37.613538 * d2r, -122.35716 * d2r), 0, 0.5);
   EXPECT_NEAR(frame.beyond_threshold_m(37.628742 * d2r, -122.39341 * d2r), frame.length_m(), 1e-6);
-  EXPECT_NEAR(frame.left_of_centreline_m(37.628742 * d2r, -122.39341 * d2r), 0, 1e-6);
+  EXPECT_NEAR(frame.left_m(37.628742 * d2r, -122.39341 * d2r), 0, 1e-6);
   // 100 m north of the centreline is right of it, landing on 298 deg: the left normal points to
   // 298 - 90 = 208 deg, whose north component is cos(208 deg) = -0.883
   const double north = 100.0 / 6378137.0 / d2r;  // about 100 m of latitude
-  EXPECT_NEAR(frame.left_of_centreline_m((37.613538 + north) * d2r, -122.35716 * d2r), -100 * 0.883, 2);
-  EXPECT_THROW(RunwayFrame({"KSFO", "27"}), std::invalid_argument);
+  EXPECT_NEAR(frame.left_m((37.613538 + north) * d2r, -122.35716 * d2r), -100 * 0.883, 2);
+  // KSFO has no 27; KCOS has 17L but not 35R (the table's): the centreline needs both ends, and
+  // the test file's runway field says which is missing
+  EXPECT_THROW(fedsim::RunwayCentreline::from_table(table, "KSFO", "27"), std::invalid_argument);
+  EXPECT_THROW(fedsim::RunwayCentreline::from_table(table, "KCOS", "17L"), std::invalid_argument);
+  EXPECT_NE(federation_error(replace(kFederation, "runway: 28R}", "runway: 27}")).find("has no runway '27'"),
+            std::string::npos);
+  EXPECT_NE(federation_error(replace(kFederation, "{airport: KSFO, runway: 28R}", "{airport: KCOS, runway: 17L}"))
+                .find("KCOS 17L: no opposite end 35R"),
+            std::string::npos);
 }
 
 TEST(QtgFederation, LimitsMaxAbsAndWhileCondition) {

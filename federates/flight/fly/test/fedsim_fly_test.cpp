@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include "common/units/units.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -254,8 +255,8 @@ TEST_F(FedsimFly, ARelativeProfileFliesAboutTheTrim) {
 }
 
 TEST_F(FedsimFly, AnAbsoluteProfileSetsEveryChannel) {
-  // Absolute: the profile is the inceptors. Channels it does not name stay at the I/O
-  // defaults (stick neutral, mixture rich), as a federation's scripted I/O flies them.
+  // Absolute: the profile is the inceptors. Channels it does not name keep the start's
+  // (trimmed) controls.
   const std::string profile =
       write("idle.csv", "time_s, throttle, flaps\n0, 0.0, 0.0\n5, 0.0, 1.0\n");
   const std::string out = path("idle");
@@ -265,7 +266,9 @@ TEST_F(FedsimFly, AnAbsoluteProfileSetsEveryChannel) {
             0);
   const csv::NumericTable csv = state(out);
   EXPECT_EQ(csv.column("controls.throttle[0]")[2], 0.0);
-  EXPECT_EQ(csv.column("controls.elevator")[2], 0.0);
+  const double trimmed_elevator = csv.column("controls.elevator")[0];
+  EXPECT_GT(std::fabs(trimmed_elevator), 0.01);  // the trim moved it (the check below can fail)
+  EXPECT_NEAR(csv.column("controls.elevator")[2], trimmed_elevator, 1e-6);  // sent as a float
   // Ramp: half way at 2.5 s, sampled two frames before the row that flies it.
   EXPECT_NEAR(csv.column("controls.flaps")[127], 0.5, 1e-6);
   const csv::NumericTable eng = engine(out);
@@ -397,6 +400,68 @@ TEST_F(FedsimFly, ClimbAndTurnTrims) {
   EXPECT_NEAR(trim["phi_deg"].get<double>(), 30.0, 1e-9);
   EXPECT_NEAR(trim["turn_rate_dps"].get<double>(),
               units::kStandardGravityMps2 * std::tan(30.0 * units::kPi / 180.0) / (100.0 * kKt) * 180.0 / units::kPi, 0.05);
+}
+
+TEST_F(FedsimFly, ARelativeProfileKeepsTheTrimsGearLever) {
+  // A 737 trimmed gear up, flown with a profile that names only the elevator: the gear stays up.
+  // Negative control: the same profile naming gear_down lowers it (the column can move).
+  const std::string pulse = write("pulse.csv", "time_s, elevator\n0, 0\n1, 0\n1, -0.05\n2, -0.05\n2, 0\n");
+  const std::string lowered = write("gear.csv", "time_s, elevator, gear_down\n0, 0, 1\n");
+  const std::vector<std::string> start = {"--aircraft", "b737", "--trim", "level", "--alt-ft", "10000",
+                                          "--kcas", "250", "--duration", "4", "--rate", "50", "--quiet"};
+  for (const auto& [profile, gear] : {std::pair{pulse, 0.0}, std::pair{lowered, 1.0}}) {
+    const std::string out = path(gear == 0.0 ? "up" : "down");
+    const FlyRun run = fly(join(start, {"--inputs", profile, "--inputs-relative", "--out", out}));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const csv::NumericTable csv = state(out);
+    EXPECT_EQ(csv.column("controls.gear_down").front(), 0.0);
+    EXPECT_EQ(csv.column("controls.gear_down").back(), gear) << profile;
+  }
+}
+
+TEST_F(FedsimFly, TheStallEntryPilotDeceleratesAtItsRateAndIdentifiesTheStall) {
+  // The C172 from 65 KCAS at idle, wings level: about the entry rate asked for, then the stall
+  // identified (this pack ends its entry with the elevator at the aft stop) and recovered.
+  // Negative control: half the entry rate halves the deceleration.
+  const std::vector<std::string> start = {"--aircraft", "c172", "--trim", "level", "--alt-ft", "3000",
+                                          "--kcas", "65", "--pilot", "stall-entry", "--duration", "60",
+                                          "--rate", "50"};
+  double rates[2] = {0, 0};
+  for (int i = 0; i < 2; ++i) {
+    const std::string rate = i == 0 ? "1" : "0.5";
+    const std::string out = path("stall" + rate);
+    const FlyRun run = fly(join(start, {"--entry-rate-kt-s", rate, "--out", out}));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const csv::NumericTable csv = state(out);
+    const auto& t = csv.column("sim_time_s");
+    const auto& cas = csv.column("air.cas_mps");
+    const auto at = [&](double time) {  // the first row at or after `time`
+      return static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), time - 1e-9) - t.begin());
+    };
+    rates[i] = (cas[at(5)] - cas[at(20)]) / kKt / 15.0;  // kt/s over the steady part of the entry
+    EXPECT_EQ(csv.column("controls.throttle[0]")[at(10)], 0.0);
+    EXPECT_LT(std::fabs(csv.column("phi_rad")[at(20)]), 2.0 * units::kDegToRad);  // wings level
+    if (i == 0) {
+      EXPECT_NE(run.output.find("stall entry: stall identified at"), std::string::npos) << run.output;
+      EXPECT_NE(run.output.find("(elevator at the aft stop)"), std::string::npos) << run.output;
+      EXPECT_EQ(csv.column("controls.throttle[0]").back(), 1.0);  // recovered with power
+      EXPECT_GT(cas.back(), cas[at(30)]);
+    }
+  }
+  EXPECT_NEAR(rates[0], 1.0, 0.25);
+  EXPECT_NEAR(rates[1], 0.5, 0.15);
+}
+
+TEST_F(FedsimFly, ThePilotRefusesRelativeControlsAndBadSettings) {
+  const std::string profile = write("p.csv", "time_s, flaps\n0, 0\n");
+  FlyRun run = fly(join(level_trim(), {"--pilot", "stall-entry", "--inputs", profile, "--inputs-relative",
+                                       "--duration", "1", "--rate", "50", "--out", path("r")}));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("--pilot flies absolute controls"), std::string::npos) << run.output;
+  run = fly(join(level_trim(), {"--pilot", "stall-entry", "--entry-rate-kt-s", "nan", "--duration", "1",
+                                "--rate", "50", "--out", path("n")}));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("--entry-rate-kt-s"), std::string::npos) << run.output;
 }
 
 }  // namespace
