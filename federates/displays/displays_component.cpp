@@ -1,5 +1,6 @@
 #include "displays/displays_component.hpp"
 
+#include "common/frame_clock/rate_slot.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
@@ -80,7 +81,7 @@ void DisplaysComponent::on_command(const msg::SimCommand& command) {
 
 bool DisplaysComponent::slot(const runtime::FrameContext& frame, double hz, std::int64_t& last) const {
   const double period = frame.frame_period_s > 0.0 ? frame.frame_period_s : 0.02;
-  const auto n = static_cast<std::int64_t>(std::floor(static_cast<double>(frame.frame) * period * hz));
+  const std::int64_t n = timing::rate_slot(frame.frame, period, hz);
   if (n == last) return false;
   last = n;
   return true;

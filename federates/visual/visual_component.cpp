@@ -1,5 +1,6 @@
 #include "visual/visual_component.hpp"
 
+#include "common/frame_clock/rate_slot.hpp"
 #include "common/navdb/nav_database.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
@@ -171,7 +172,7 @@ void VisualComponent::on_command(const msg::SimCommand& command) {
 
 bool VisualComponent::render_slot(const runtime::FrameContext& frame) {
   const double period = frame.frame_period_s > 0.0 ? frame.frame_period_s : 0.02;
-  const auto slot = static_cast<std::int64_t>(std::floor(static_cast<double>(frame.frame) * period * setup_.render_hz));
+  const std::int64_t slot = timing::rate_slot(frame.frame, period, setup_.render_hz);
   if (slot == last_render_slot_) return false;
   last_render_slot_ = slot;
   return true;
@@ -281,7 +282,7 @@ void VisualComponent::write_snapshot(const runtime::FrameContext& frame) {
 void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   if (setup_.stream_hz <= 0.0 || !have_image_) return;
   const double period = frame.frame_period_s > 0.0 ? frame.frame_period_s : 0.02;
-  const auto slot = static_cast<std::int64_t>(std::floor(static_cast<double>(frame.frame) * period * setup_.stream_hz));
+  const std::int64_t slot = timing::rate_slot(frame.frame, period, setup_.stream_hz);
   if (slot == last_stream_slot_) return;
   last_stream_slot_ = slot;
   if (setup_.jpeg.downscale > 1) scaled_ = downscale(image_, setup_.jpeg.downscale);

@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -58,14 +59,48 @@ struct TickRecord {
 struct ControlsRecord {
   std::uint64_t frame;
   double sim_time_s;
-  double elevator;
+  double elevator, aileron, rudder;
   std::int64_t arrival_ns;
 };
 struct StateRecord {
   std::uint64_t frame;
-  double theta_rad, q_radps;
+  double theta_rad, q_radps;  // pitch
+  double phi_rad, p_radps;    // roll
+  double psi_rad, r_radps;    // yaw
   std::int64_t arrival_ns;
 };
+
+/// What one axis steps and watches: the control, the flight state's attitude and body rate
+/// (with their floors), and how a picture is reduced to one number (docs/latency.md).
+struct AxisSpec {
+  const char* control;         // the io profile's column
+  const char* state_what;      // named in "no response"
+  const char* attitude;        // sample names (latency_samples.csv, the detection's detail)
+  const char* rate;
+  double (*attitude_of)(const StateRecord&);
+  double (*rate_of)(const StateRecord&);
+  double (*control_of)(const ControlsRecord&);
+  const char* measure;         // the pictures' number
+  const char* visual_what;
+  const char* pfd_what;
+  double picture_floor;        // the measure's floor
+};
+
+const AxisSpec& axis_spec(const std::string& axis) {
+  static const AxisSpec pitch{"elevator", "pitch attitude and rate", "theta_rad", "q_radps",
+                              [](const StateRecord& x) { return x.theta_rad; }, [](const StateRecord& x) { return x.q_radps; },
+                              [](const ControlsRecord& c) { return c.elevator; }, "blueness", "the visual's horizon",
+                              "the PFD's horizon", 2e-5};
+  static const AxisSpec roll{"aileron", "roll attitude and rate", "phi_rad", "p_radps",
+                             [](const StateRecord& x) { return x.phi_rad; }, [](const StateRecord& x) { return x.p_radps; },
+                             [](const ControlsRecord& c) { return c.aileron; }, "tilt", "the visual's horizon tilt",
+                             "the PFD's horizon tilt, bank pointer and slip indicator", 2e-5};
+  static const AxisSpec yaw{"rudder", "heading and yaw rate", "psi_rad", "r_radps",
+                            [](const StateRecord& x) { return x.psi_rad; }, [](const StateRecord& x) { return x.r_radps; },
+                            [](const ControlsRecord& c) { return c.rudder; }, "shift_px",
+                            "the visual's ground (sideways shift)", "the PFD's heading scale (sideways shift)", 0.002};
+  return axis == "roll" ? roll : axis == "yaw" ? yaw : pitch;
+}
 struct MotionRecord {
   std::uint64_t frame;
   msg::MotionStatus status;
@@ -124,13 +159,15 @@ class Probe {
         dds_, runtime::topics::pilot_controls, "", [this](const msg::PilotControls& c, const auto&) {
           const std::int64_t arrival = now_ns();
           std::lock_guard lock(mutex_);
-          seen_.controls.push_back({c.stamp().frame(), c.stamp().sim_time_s(), c.elevator(), arrival});
+          seen_.controls.push_back(
+              {c.stamp().frame(), c.stamp().sim_time_s(), c.elevator(), c.aileron(), c.rudder(), arrival});
         });
     states_ = std::make_unique<runtime::Subscription<msg::AircraftState>>(
         dds_, runtime::topics::aircraft_state, state_qos, [this](const msg::AircraftState& s, const auto&) {
           const std::int64_t arrival = now_ns();
           std::lock_guard lock(mutex_);
-          seen_.states.push_back({s.stamp().frame(), s.theta_rad(), s.omega_body_radps()[1], arrival});
+          const auto& w = s.omega_body_radps();
+          seen_.states.push_back({s.stamp().frame(), s.theta_rad(), w[1], s.phi_rad(), w[0], s.psi_rad(), w[2], arrival});
         });
     motion_ = std::make_unique<runtime::Subscription<msg::MotionPlatformState>>(
         dds_, runtime::topics::motion_state, state_qos, [this](const msg::MotionPlatformState& m, const auto&) {
@@ -194,13 +231,21 @@ std::uint64_t total_frames(const LatencyOptions& o) {
 // below the body axis, so that the horizon (1.1 deg below level from 4000 ft) lies near its
 // middle at the trim's 1.0 deg pitch and stays in view while the doublets pitch the C172 by
 // about +-0.3 deg; 4x multisampling so that the horizon's edge moves smoothly by a fraction of a
-// pixel.
-std::string channel_yaml() {
-  return "# fedsim latency's picture (tools/fedsim/latency.cpp): a narrow view of the horizon\n"
+// pixel. Roll looks at the same horizon (it tilts; the sky and ground are ray-cast once per
+// pixel, so the horizon itself moves by whole pixels of each column: docs/latency.md). Yaw looks
+// 30 deg down instead, at textured
+// ground 2.5 km away (about 1.4 m a pixel): the horizon does not move with heading, and the
+// ground nearer the horizon is seen so obliquely that its texture is smeared into horizontal
+// streaks with nothing to shift sideways; at 30 deg the forward motion (0.35 px a frame, down
+// the picture) is slow beside a heading change of 0.01 deg (0.3 px across it).
+std::string channel_yaml(const std::string& axis) {
+  const bool yaw = axis == "yaw";
+  return std::string(yaw ? "# fedsim latency's picture (tools/fedsim/latency.cpp): a narrow view of the ground\n"
+                         : "# fedsim latency's picture (tools/fedsim/latency.cpp): a narrow view of the horizon\n") +
          "channels:\n"
          "  - name: latency\n"
          "    heading_offset_deg: 0\n"
-         "    pitch_offset_deg: -2.2\n"
+         "    pitch_offset_deg: " + (yaw ? "-30" : "-2.2") + "\n"
          "    roll_offset_deg: 0\n"
          "    horizontal_fov_deg: 6.25\n"
          "    vertical_fov_deg: 5\n"
@@ -219,6 +264,10 @@ std::string deployment_yaml(const LatencyOptions& o, const fs::path& dir) {
   const bool lockstep = o.mode == "lockstep";
   const std::string state_qos = lockstep ? ", --state-qos, lockstep_data" : "";
   const std::string rate = fmt(o.rate_hz, 6);
+  // The pictures' rate: every frame (fedsim-visual and fedsim-displays draw in frame N when
+  // N's common/frame_clock rate_slot is new; before 2026-12-06 a rounding error skipped frames
+  // 29, 58, ..., 902 at the frame rate, which lost a roll step's picture).
+  const std::string picture_hz = rate;
   std::ostringstream y;
   y << "# written by fedsim latency (tools/fedsim/latency.cpp)\n"
     << "name: latency\n"
@@ -237,12 +286,12 @@ std::string deployment_yaml(const LatencyOptions& o, const fs::path& dir) {
     << "  - name: visual\n    binary: fedsim-visual\n"
     << "    args: [--aircraft, \"${DATA_DIR}/aircraft/c172.yaml\", --channels, " << quoted((dir / "latency_channel.yaml").string())
     << ", --channel, latency,\n"
-    << "           --render-hz, \"" << rate << "\", --stream-hz, \"" << rate
+    << "           --render-hz, \"" << picture_hz << "\", --stream-hz, \"" << picture_hz
     << "\", --stream-downscale, \"1\", --jpeg-quality, \"100\",\n"
     << "           --visibility-m, \"1000000\", --gl, osmesa" << state_qos << "]\n"
     << "  - name: displays\n    binary: fedsim-displays\n"
     << "    args: [--no-autopilot, --no-navdb, --displays, pfd, --width-px, \"400\", --height-px, \"400\",\n"
-    << "           --render-hz, \"" << rate << "\", --stream-hz, \"" << rate << "\", --jpeg-quality, \"100\", --gl, osmesa" << state_qos
+    << "           --render-hz, \"" << picture_hz << "\", --stream-hz, \"" << picture_hz << "\", --jpeg-quality, \"100\", --gl, osmesa" << state_qos
     << "]\n";
   return y.str();
 }
@@ -330,18 +379,41 @@ struct StepResult {
   std::map<std::string, PathResult> paths;
 };
 
+/// Yaw: where the picture shifts sideways with heading. The visual: all of its view of the
+/// ground. The PFD: the top of the heading arc below the attitude indicator (rows 296-344 and
+/// columns 120-280 of 400x400), where the arc's ticks and figures move sideways as it turns;
+/// not the heading readout above it, which changes by whole degrees.
+latency::Region yaw_region(std::uint16_t channel) {
+  return channel == kPfdChannel ? latency::Region{0.3, 0.7, 0.74, 0.86} : latency::Region{};
+}
+
+/// Roll: where the horizon tilts. The visual: all of it. The PFD: the attitude indicator's
+/// middle (columns 133-267, rows 128-248 of 400x400: the horizon and the pitch ladder about
+/// it), without its top, the bank pointer and slip indicator, measured apart (below).
+latency::Region roll_region(std::uint16_t channel) {
+  return channel == kPfdChannel ? latency::Region{1.0 / 3.0, 2.0 / 3.0, 0.32, 0.62} : latency::Region{};
+}
+/// Roll, the PFD's other cue: the bank pointer and the slip indicator below it (columns
+/// 160-240, rows 84-98: white on the sky; the fixed zero index above them left out), whose
+/// sideways movement the same left-minus-right blueness sees. The pointer turns with the bank;
+/// the slip indicator moves with the lateral specific force, which the aileron changes at once.
+const latency::Region kPfdBankPointer{0.4, 0.6, 0.21, 0.245};
+
 struct Analysis {
   const LatencyOptions& o;
   const Seen& seen;
   bool lockstep;
+  const AxisSpec& spec;
   std::map<std::uint64_t, const TickRecord*> tick_by_frame;
   std::vector<latency::TickSeen> ticks_by_arrival;
-  std::map<std::uint16_t, std::vector<Point>> picture_series;  // channel -> (state frame, blueness)
+  std::map<std::uint16_t, std::vector<Point>> picture_series;  // channel -> (state frame, the axis's measure)
+  std::vector<Point> pfd_pointer_series;                      // roll: the PFD's bank pointer and slip indicator
   std::map<std::uint16_t, std::map<std::uint64_t, std::int64_t>> picture_arrival;  // first arrival per frame
   std::map<std::uint16_t, std::map<std::uint64_t, std::int64_t>> status_arrival;
   std::vector<std::string> notes;
 
-  Analysis(const LatencyOptions& options, const Seen& s) : o(options), seen(s), lockstep(options.mode == "lockstep") {
+  Analysis(const LatencyOptions& options, const Seen& s)
+      : o(options), seen(s), lockstep(options.mode == "lockstep"), spec(axis_spec(options.axis)) {
     for (const TickRecord& t : seen.ticks) {
       tick_by_frame.emplace(t.frame, &t);  // a resent tick keeps its first arrival
       ticks_by_arrival.push_back({t.frame, t.arrival_ns});
@@ -349,18 +421,40 @@ struct Analysis {
     std::sort(ticks_by_arrival.begin(), ticks_by_arrival.end(),
               [](const auto& a, const auto& b) { return a.arrival_ns < b.arrival_ns; });
     std::size_t undecodable = 0;
-    for (const PictureRecord& p : seen.pictures) {
-      if (picture_arrival[p.channel].count(p.frame)) continue;
-      try {
-        const visual::Image image = visual::decode_jpeg(p.jpeg.data(), p.jpeg.size());
-        // The PFD: the middle third of its columns, the attitude indicator (the speed and
-        // altitude tapes at its sides roll with the phugoid); the visual: all of it.
-        const double blue = p.channel == kPfdChannel ? latency::blueness(image, 1.0 / 3.0, 2.0 / 3.0)
-                                                     : latency::blueness(image);
-        picture_series[p.channel].push_back({p.frame, blue});
-        picture_arrival[p.channel][p.frame] = p.arrival_ns;
-      } catch (const std::exception&) {
-        ++undecodable;
+    // The first picture of each state frame, per channel, in frame order (yaw compares each
+    // picture with the one before it).
+    std::map<std::uint16_t, std::map<std::uint64_t, const PictureRecord*>> by_frame;
+    for (const PictureRecord& p : seen.pictures) by_frame[p.channel].emplace(p.frame, &p);
+    for (const auto& [channel, pictures] : by_frame) {
+      std::optional<latency::Luma> previous;
+      double scene_x_px = 0.0;  // yaw: the picture's content moved this far sideways since the first
+      for (const auto& [frame, p] : pictures) {
+        try {
+          const visual::Image image = visual::decode_jpeg(p->jpeg.data(), p->jpeg.size());
+          double value = 0.0;
+          if (o.axis == "yaw") {
+            latency::Luma luma = latency::luminance(image);
+            if (previous) {
+              const auto shift = latency::image_shift(*previous, luma, yaw_region(channel));
+              scene_x_px = shift ? scene_x_px + shift->dx_px : std::numeric_limits<double>::quiet_NaN();
+            }
+            value = scene_x_px;
+            previous = std::move(luma);
+          } else {
+            // The PFD: the middle third of its columns, the attitude indicator (the speed and
+            // altitude tapes at its sides roll with the phugoid); the visual: all of it.
+            const double first = channel == kPfdChannel ? 1.0 / 3.0 : 0.0;
+            const double end = channel == kPfdChannel ? 2.0 / 3.0 : 1.0;
+            value = o.axis == "roll" ? latency::blueness_tilt(image, roll_region(channel)) : latency::blueness(image, first, end);
+            if (o.axis == "roll" && channel == kPfdChannel) {
+              pfd_pointer_series.push_back({frame, latency::blueness_tilt(image, kPfdBankPointer)});
+            }
+          }
+          picture_series[channel].push_back({frame, value});
+          picture_arrival[channel][frame] = p->arrival_ns;
+        } catch (const std::exception&) {
+          ++undecodable;
+        }
       }
     }
     for (auto& [channel, series] : picture_series) {
@@ -435,9 +529,9 @@ struct Analysis {
     PathResult r;
     latency::OnsetOptions opt = onset_options(1e-6);
     opt.min_threshold = 1e-6;
-    const auto onset = latency::find_onset(series_of(seen.controls, [](const auto& c) { return c.elevator; }), s - 1, opt);
+    const auto onset = latency::find_onset(series_of(seen.controls, spec.control_of), s - 1, opt);
     if (!onset.frame) {
-      r.problem = no_response(onset, "the elevator");
+      r.problem = no_response(onset, (std::string("the ") + spec.control).c_str());
       // S is the first frame the io stepped at or after the step's time: past the doublet's
       // end, its ticks were skipped (a loaded machine) and the step never left it.
       const ControlsRecord* at_s = first_at(seen.controls, s);
@@ -458,20 +552,21 @@ struct Analysis {
 
   PathResult state_path(std::uint64_t s) const {
     PathResult r;
-    const latency::OnsetOptions theta = onset_options(1e-6);  // rad (0.00006 deg)
-    const latency::OnsetOptions q = onset_options(1e-5);      // rad/s
-    const auto best = latency::earliest_onset(
-        {series_of(seen.states, [](const auto& x) { return x.theta_rad; }),
-         series_of(seen.states, [](const auto& x) { return x.q_radps; })},
-        s, {theta, q});
+    const latency::OnsetOptions attitude = onset_options(1e-6);  // rad (0.00006 deg)
+    const latency::OnsetOptions rate = onset_options(1e-5);      // rad/s
+    const auto best = latency::earliest_onset({series_of(seen.states, spec.attitude_of), series_of(seen.states, spec.rate_of)},
+                                              s, {attitude, rate});
     if (!best.onset.frame) {
-      r.problem = no_response(best.onset, "pitch attitude and rate");
+      r.problem = no_response(best.onset, spec.state_what);
       return r;
     }
     const StateRecord* x = first_at(seen.states, *best.onset.frame);
     if (r.problem = lost_before(seen.states, x->frame, s); !r.problem.empty()) return r;
     r.responded = true;
-    r.detail = std::string(best.channel == 0 ? "theta " : "q ") + detail_of(best.onset);
+    // The pitch figures' names as they were: theta, q; else the sample's name less its unit.
+    const std::string name = best.channel == 0 ? spec.attitude : spec.rate;
+    r.detail = (o.axis == "pitch" ? std::string(best.channel == 0 ? "theta" : "q") : name.substr(0, name.find('_'))) + " " +
+               detail_of(best.onset);
     r.output_frame = r.state_frame = x->frame;
     r.frames = static_cast<long>(x->frame) - static_cast<long>(s);
     r.ms = ms_since_tick(s, x->arrival_ns);
@@ -529,8 +624,14 @@ struct Analysis {
       r.problem = "no response: no picture of channel " + std::to_string(channel) + " arrived";
       return r;
     }
-    const latency::OnsetOptions opt = onset_options(2e-5);  // of the blueness (-1..1): a few pixels of horizon
-    const auto onset = latency::find_onset(series_it->second, s, opt);
+    // Of the blueness or its tilt (-1..1): a few pixels of horizon; of the yaw's shift: 0.002 px
+    // (a still picture registers with itself exactly: 0).
+    const latency::OnsetOptions opt = onset_options(spec.picture_floor);
+    // Roll on the PFD: the horizon or the bank pointer and slip indicator, whichever first.
+    const bool pointer_too = channel == kPfdChannel && !pfd_pointer_series.empty();
+    const auto best = pointer_too ? latency::earliest_onset({series_it->second, pfd_pointer_series}, s, {opt, opt})
+                                  : latency::ChannelOnset{0, latency::find_onset(series_it->second, s, opt)};
+    const latency::Onset& onset = best.onset;
     if (!onset.frame) {
       r.problem = no_response(onset, what);
       return r;
@@ -558,7 +659,7 @@ struct Analysis {
       drawn_in = *f;
     }
     r.responded = true;
-    r.detail = "blueness " + detail_of(onset);
+    r.detail = std::string(best.channel == 0 ? spec.measure : "pointer_tilt") + " " + detail_of(onset);
     r.output_frame = drawn_in;
     r.state_frame = key;
     r.frames = static_cast<long>(drawn_in) - static_cast<long>(s);
@@ -580,9 +681,9 @@ struct Analysis {
     const std::uint64_t s = *result.step_frame;
     result.paths["controls"] = controls_path(s, result.time_s);
     result.paths["flight_state"] = state_path(s);
-    result.paths["visual_image"] = image_path(s, kVisualChannel, "the visual's horizon");
+    result.paths["visual_image"] = image_path(s, kVisualChannel, spec.visual_what);
     result.paths["motion_platform"] = motion_path(s);
-    result.paths["pfd_image"] = image_path(s, kPfdChannel, "the PFD's horizon");
+    result.paths["pfd_image"] = image_path(s, kPfdChannel, spec.pfd_what);
     if (!tick_by_frame.count(s) && !lockstep) {
       for (auto& [name, p] : result.paths) {
         if (p.responded && !p.ms) p.problem = "tick " + std::to_string(s) + " not seen: no time";
@@ -665,20 +766,23 @@ std::string most_common(const std::vector<std::string>& texts) {
 }
 
 /// Every series the detection looked at, for plots and for checking a verdict by eye:
-/// path,channel,frame,value (the picture's blueness, the state's theta and q, each jack).
+/// path,channel,frame,value (the picture's measure, the state's attitude and rate on the axis
+/// (theta and q for pitch), each jack).
 void write_samples_csv(const fs::path& path, const Analysis& a) {
   std::ofstream f(path);
+  const AxisSpec& spec = a.spec;
   f << "path,channel,frame,value\n" << std::setprecision(12);
-  for (const auto& c : a.seen.controls) f << "controls,elevator," << c.frame << ',' << c.elevator << '\n';
-  for (const auto& s : a.seen.states) f << "flight_state,theta_rad," << s.frame << ',' << s.theta_rad << '\n';
-  for (const auto& s : a.seen.states) f << "flight_state,q_radps," << s.frame << ',' << s.q_radps << '\n';
+  for (const auto& c : a.seen.controls) f << "controls," << spec.control << ',' << c.frame << ',' << spec.control_of(c) << '\n';
+  for (const auto& s : a.seen.states) f << "flight_state," << spec.attitude << ',' << s.frame << ',' << spec.attitude_of(s) << '\n';
+  for (const auto& s : a.seen.states) f << "flight_state," << spec.rate << ',' << s.frame << ',' << spec.rate_of(s) << '\n';
   for (const auto& m : a.seen.motion) {
     for (int i = 0; i < 6; ++i) f << "motion_platform,jack" << i + 1 << "_m," << m.frame << ',' << m.jack_m[i] << '\n';
   }
   for (const auto& [channel, series] : a.picture_series) {
     const char* name = channel == kPfdChannel ? "pfd_image" : channel == kVisualChannel ? "visual_image" : "picture";
-    for (const Point& p : series) f << name << ",blueness," << p.frame << ',' << p.value << '\n';
+    for (const Point& p : series) f << name << ',' << spec.measure << ',' << p.frame << ',' << p.value << '\n';
   }
+  for (const Point& p : a.pfd_pointer_series) f << "pfd_image,pointer_tilt," << p.frame << ',' << p.value << '\n';
 }
 
 }  // namespace
@@ -688,6 +792,15 @@ void write_samples_csv(const fs::path& path, const Analysis& a) {
 namespace {
 int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err);
 }
+
+double default_amplitude(const std::string& axis) {
+  // Pitch: 0.7 of the elevator, as measured since issue 13. Roll and yaw: the most the option
+  // allows, since the aileron and rudder answer more slowly in the first frames
+  // (docs/latency.md); the doublet still brings the aircraft back near its trim.
+  return axis == "pitch" ? 0.7 : 0.75;
+}
+
+std::string axis_control(const std::string& axis) { return axis_spec(axis).control; }
 
 double step_time_s(const LatencyOptions& o, int k) { return o.first_step_s + k * o.interval_s; }
 double step_amplitude(const LatencyOptions& o, int k) { return k % 2 == 0 ? o.amplitude : -o.amplitude; }
@@ -700,6 +813,7 @@ void check_latency_options(const LatencyOptions& o) {
     }
   };
   if (o.mode != "lockstep" && o.mode != "realtime") throw std::invalid_argument("--mode: lockstep or realtime");
+  if (o.axis != "pitch" && o.axis != "roll" && o.axis != "yaw") throw std::invalid_argument("--axis: pitch, roll or yaw");
   // Every frame's picture is needed: fedsim-visual streams at most 60 pictures a second.
   finite_in(o.rate_hz, 10.0, 60.0, "--rate");
   if (o.steps < 1 || o.steps > 50) throw std::invalid_argument("--steps: 1..50");
@@ -717,8 +831,9 @@ void check_latency_options(const LatencyOptions& o) {
 
 std::string latency_profile_csv(const LatencyOptions& o) {
   std::ostringstream csv;
-  csv << "# fedsim latency: elevator doublets added to the trim (flight --controls relative)\n"
-      << "time_s, elevator\n0.0, 0.0\n";
+  const std::string control = axis_control(o.axis);
+  csv << "# fedsim latency: " << control << " doublets added to the trim (flight --controls relative)\n"
+      << "time_s, " << control << "\n0.0, 0.0\n";
   for (int k = 0; k < o.steps; ++k) {
     const double t = step_time_s(o, k), a = step_amplitude(o, k);
     // A doublet (a, then -a, then nothing): its net impulse is nil, so the aircraft is back
@@ -754,7 +869,7 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   const fs::path dir = fs::absolute(o.out_dir);
   fs::create_directories(dir);
   write_text(dir / "step_profile.csv", latency_profile_csv(o));
-  write_text(dir / "latency_channel.yaml", channel_yaml());
+  write_text(dir / "latency_channel.yaml", channel_yaml(o.axis));
   write_text(dir / "latency.yaml", deployment_yaml(o, dir));
 
   const bool lockstep = o.mode == "lockstep";
@@ -765,8 +880,8 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   const double steal_before = steal_s();
   const double load_before = load_average();
   const auto wall_start = std::chrono::steady_clock::now();
-  out << "fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 1) << " Hz, " << o.steps << " elevator doublet(s) of "
-      << fmt(o.amplitude, 2) << ", " << fmt(o.pulse_s, 3) << " s each way, domain " << o.dds.domain_id << "; "
+  out << "fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 1) << " Hz, " << o.steps << ' ' << axis_control(o.axis)
+      << " doublet(s) of " << fmt(o.amplitude, 2) << ", " << fmt(o.pulse_s, 3) << " s each way, domain " << o.dds.domain_id << "; "
       << total_frames(o) << " frames; federation in " << (dir / "run").string() << '\n';
   util::ChildProcess run({fedsim.string(), "run", (dir / "latency.yaml").string(), "--domain",
                           std::to_string(o.dds.domain_id), "--out", (dir / "run").string(), "--quiet",
@@ -821,8 +936,10 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   // ---- the table (stdout and markdown) and the JSON line ----
   const double period_ms = 1000.0 / o.rate_hz;
   std::ostringstream md;
-  md << "# fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 0) << " Hz\n\n"
-     << o.steps << " elevator doublet(s) of " << fmt(o.amplitude, 2) << " (sign alternating), " << fmt(o.pulse_s, 3)
+  // The pitch report reads as it did before the axes (issue 13); the others name their axis.
+  md << "# fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 0) << " Hz"
+     << (o.axis == "pitch" ? std::string() : ", " + o.axis + " axis") << "\n\n"
+     << o.steps << ' ' << axis_control(o.axis) << " doublet(s) of " << fmt(o.amplitude, 2) << " (sign alternating), " << fmt(o.pulse_s, 3)
      << " s each way, from " << fmt(o.first_step_s, 1) << " s every " << fmt(o.interval_s, 1) << " s; S is the frame the io "
      << "federate sampled the step in. ms: from the timing federate's publish of tick S to the arrival of the "
      << "first output showing the step" << (lockstep ? " (lockstep runs as fast as it can: the ms are not a "
@@ -833,6 +950,7 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
      << "|---|---|---|---|---|---|\n";
   nlohmann::json j;
   j["mode"] = o.mode;
+  j["axis"] = o.axis;
   j["rate_hz"] = o.rate_hz;
   j["steps"] = o.steps;
   j["amplitude"] = o.amplitude;
@@ -918,15 +1036,20 @@ void add_latency_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--mode", options->mode, "lockstep | realtime")
       ->check(CLI::IsMember({"lockstep", "realtime"}))
       ->capture_default_str();
+  cmd->add_option("--axis", options->axis,
+                  "pitch (elevator doublets; the horizon's height), roll (aileron; the horizon's tilt) or yaw (rudder; "
+                  "the ground's and the heading scale's sideways shift)")
+      ->check(CLI::IsMember({"pitch", "roll", "yaw"}))
+      ->capture_default_str();
   cmd->add_option("--rate", options->rate_hz, "frame rate [Hz] (a picture every frame: at most 60)")
       ->check(util::FiniteRange(10, 60))
       ->capture_default_str();
-  cmd->add_option("--steps", options->steps, "elevator doublets measured (each one's first edge is the step)")->check(CLI::Range(1, 50))->capture_default_str();
-  cmd->add_option("--amplitude", options->amplitude,
-                  "elevator step added to the trim (normalised, + nose down), the first half of a doublet; "
-                  "the sign alternates; 0: none, the negative control")
-      ->check(util::FiniteRange(-0.75, 0.75))
-      ->capture_default_str();
+  cmd->add_option("--steps", options->steps, "doublets measured (each one's first edge is the step)")->check(CLI::Range(1, 50))->capture_default_str();
+  auto* amplitude = cmd->add_option("--amplitude", options->amplitude,
+                  "the axis's control step added to the trim (normalised; + nose down, right wing down, nose right), "
+                  "the first half of a doublet; the sign alternates; 0: none, the negative control "
+                  "(default: 0.7 pitch, 0.75 roll and yaw)")
+      ->check(util::FiniteRange(-0.75, 0.75));
   cmd->add_option("--pulse", options->pulse_s, "each half of the doublet [s]")->check(util::FiniteRange(0.005, 1.0))->capture_default_str();
   cmd->add_option("--first-step", options->first_step_s, "sim time of the first step [s]")
       ->check(util::FiniteRange(1.0, 600.0))
@@ -937,7 +1060,10 @@ void add_latency_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--out", options->out_dir, "output folder (latency.md, the deployment, the run's logs)")->capture_default_str();
   runtime::add_dds_options(*cmd, options->dds);
-  cmd->callback([options, &exit_code] { exit_code = run_latency(*options, std::cout, std::cerr); });
+  cmd->callback([options, amplitude, &exit_code] {
+    if (amplitude->count() == 0) options->amplitude = default_amplitude(options->axis);
+    exit_code = run_latency(*options, std::cout, std::cerr);
+  });
 }
 
 }  // namespace fedsim::launcher

@@ -3,14 +3,17 @@
 // section 7.3 "Latency"), measured end to end, as docs/latency.md describes.
 //
 // It starts a small federation through `fedsim run` (timing, io flying a generated profile of
-// elevator doublets about the trim: the first edge of each is the step, flight, visual at the full frame rate with a small picture
-// aimed at the horizon, motion, displays drawing the PFD), watches it from its own participant,
-// and for every step and every path finds the first output that shows the step:
+// doublets about the trim on the axis's control: elevator, aileron or rudder; the first edge of
+// each is the step; flight, visual at the full frame rate with a small picture aimed at the
+// horizon (at the ground for yaw), motion, displays drawing the PFD), watches it from its own
+// participant, and for every step and every path finds the first output that shows the step:
 //   controls        fedsim/pilot_controls: the input itself (frame S, the step's frame)
-//   flight_state    fedsim/aircraft_state: pitch attitude and rate leave their trend
-//   visual_image    fedsim/visual_picture (channel 0): the horizon moves in the decoded picture
+//   flight_state    fedsim/aircraft_state: pitch (roll, heading) attitude and rate leave their trend
+//   visual_image    fedsim/visual_picture (channel 0): the horizon moves (pitch), tilts (roll), or
+//                   the ground shifts sideways (yaw) in the decoded picture
 //   motion_platform fedsim/motion_state: a jack leaves its trend
-//   pfd_image       fedsim/visual_picture (channel 100): the PFD's horizon moves
+//   pfd_image       fedsim/visual_picture (channel 100): the PFD's horizon moves (pitch), tilts
+//                   (roll), or its heading scale turns (yaw)
 // A path's delay is counted in frames (the frame the output was produced in minus S) and, in
 // realtime, in milliseconds from the timing federate's publish of tick S (the instant the input
 // was sampled) to the output's arrival (for a picture: its visual_status, sent when the image is
@@ -41,9 +44,11 @@ namespace fedsim::launcher {
 
 struct LatencyOptions {
   std::string mode = "lockstep";  // lockstep | realtime
+  std::string axis = "pitch";     // pitch | roll | yaw: the control stepped (elevator, aileron, rudder) and what is watched
   double rate_hz = 50.0;         // 10..60: every frame's picture is streamed (fedsim-visual: at most 60 a second)
   int steps = 5;                  // doublets measured; the first edge of each is the step
-  double amplitude = 0.7;         // elevator step, normalised, added to the trim (+ nose down); 0: none
+  double amplitude = 0.7;         // the control's step, normalised, added to the trim (+ nose down, right wing down,
+                                  // nose right); 0: none. The command line's default is the axis's (default_amplitude)
   double pulse_s = 0.04;          // each half of the doublet [s]
   double first_step_s = 9.0;      // sim time of the first step (the platform engages in ~5.2 s, then settles) [s]
   double interval_s = 3.0;        // between steps [s]
@@ -52,10 +57,15 @@ struct LatencyOptions {
   runtime::ParticipantOptions dds;
 };
 
+/// The step `fedsim latency --axis AXIS` takes when --amplitude is not given (docs/latency.md).
+double default_amplitude(const std::string& axis);
+/// The profile column the axis steps: elevator, aileron or rudder.
+std::string axis_control(const std::string& axis);
+
 /// Throws std::invalid_argument naming the option that is out of range or not finite.
 void check_latency_options(const LatencyOptions& options);
 
-/// The profile fedsim-io flies: time_s, elevator (relative to the trim), one doublet per step.
+/// The profile fedsim-io flies: time_s, the axis's control (relative to the trim), one doublet per step.
 std::string latency_profile_csv(const LatencyOptions& options);
 /// Sim time of step k (0-based) and its signed amplitude.
 double step_time_s(const LatencyOptions& options, int k);

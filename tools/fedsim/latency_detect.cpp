@@ -154,6 +154,106 @@ double blueness(const visual::Image& image, double first_column, double end_colu
   return static_cast<double>(sum) / (255.0 * static_cast<double>(c1 - c0) * image.height_px);
 }
 
+namespace {
+
+// The mean of max(blue - red, 0) / 255 over columns [c0, c1) and rows [r0, r1): the sky's
+// blueness alone.
+double sky_blueness(const visual::Image& image, int c0, int c1, int r0, int r1) {
+  long long sum = 0;
+  for (int row = r0; row < r1; ++row) {
+    const std::uint8_t* px = &image.rgba[(static_cast<std::size_t>(row) * image.width_px + c0) * 4];
+    for (int c = c0; c < c1; ++c, px += 4) sum += std::max(0, static_cast<int>(px[2]) - px[0]);
+  }
+  return static_cast<double>(sum) / (255.0 * static_cast<double>(c1 - c0) * (r1 - r0));
+}
+
+bool region_valid(const Region& g) {
+  return g.first_column >= 0.0 && g.first_column < g.end_column && g.end_column <= 1.0 && g.first_row >= 0.0 &&
+         g.first_row < g.end_row && g.end_row <= 1.0;
+}
+
+}  // namespace
+
+double blueness_tilt(const visual::Image& image, const Region& region) {
+  const std::size_t pixels = static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px);
+  if (pixels == 0 || image.rgba.size() < pixels * 4) throw std::invalid_argument("blueness_tilt: empty image");
+  if (!region_valid(region)) throw std::invalid_argument("blueness_tilt: the region must lie within 0..1, first < end");
+  const int c0 = static_cast<int>(std::floor(region.first_column * image.width_px));
+  const int c2 = std::min(image.width_px, static_cast<int>(std::ceil(region.end_column * image.width_px)));
+  const int r0 = static_cast<int>(std::floor(region.first_row * image.height_px));
+  const int r1 = std::max(r0 + 1, std::min(image.height_px, static_cast<int>(std::ceil(region.end_row * image.height_px))));
+  if (c2 - c0 < 2) throw std::invalid_argument("blueness_tilt: fewer than two columns");
+  const int c1 = (c0 + c2) / 2;
+  return sky_blueness(image, c0, c1, r0, r1) - sky_blueness(image, c1, c2, r0, r1);
+}
+
+Luma luminance(const visual::Image& image) {
+  const std::size_t pixels = static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px);
+  if (pixels == 0 || image.rgba.size() < pixels * 4) throw std::invalid_argument("luminance: empty image");
+  Luma l{image.width_px, image.height_px, std::vector<float>(pixels)};
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const std::uint8_t* px = &image.rgba[i * 4];
+    l.value[i] = static_cast<float>(0.2126 * px[0] + 0.7152 * px[1] + 0.0722 * px[2]);
+  }
+  return l;
+}
+
+namespace {
+
+// previous(x, y) by bilinear interpolation, clamped to the picture.
+double bilinear(const Luma& l, double x, double y) {
+  x = std::clamp(x, 0.0, l.width_px - 1.0);
+  y = std::clamp(y, 0.0, l.height_px - 1.0);
+  const int x0 = std::min(static_cast<int>(x), l.width_px - 2), y0 = std::min(static_cast<int>(y), l.height_px - 2);
+  const double fx = x - x0, fy = y - y0;
+  return (1 - fy) * ((1 - fx) * l.at(x0, y0) + fx * l.at(x0 + 1, y0)) +
+         fy * ((1 - fx) * l.at(x0, y0 + 1) + fx * l.at(x0 + 1, y0 + 1));
+}
+
+}  // namespace
+
+std::optional<Shift> image_shift(const Luma& previous, const Luma& current, const Region& region) {
+  if (!region_valid(region)) throw std::invalid_argument("image_shift: the region must lie within 0..1, first < end");
+  if (previous.width_px != current.width_px || previous.height_px != current.height_px || previous.width_px < 3 ||
+      previous.height_px < 3) {
+    return std::nullopt;
+  }
+  constexpr int kMargin = 4;  // keeps the gradient's and the warp's neighbours inside the picture
+  const int c0 = std::max(kMargin, static_cast<int>(std::floor(region.first_column * current.width_px)));
+  const int c1 = std::min(current.width_px - kMargin, static_cast<int>(std::ceil(region.end_column * current.width_px)));
+  const int r0 = std::max(kMargin, static_cast<int>(std::floor(region.first_row * current.height_px)));
+  const int r1 = std::min(current.height_px - kMargin, static_cast<int>(std::ceil(region.end_row * current.height_px)));
+  if (c1 - c0 < 3 || r1 - r0 < 3) return std::nullopt;
+  Shift d;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    // current(x) ~ previous(x - d - delta) ~ warped(x) - gradient . delta: least squares in delta.
+    double gxx = 0, gxy = 0, gyy = 0, bx = 0, by = 0;
+    for (int r = r0; r < r1; ++r) {
+      for (int c = c0; c < c1; ++c) {
+        const double x = c - d.dx_px, y = r - d.dy_px;
+        const double warped = bilinear(previous, x, y);
+        const double gx = 0.5 * (bilinear(previous, x + 1, y) - bilinear(previous, x - 1, y));
+        const double gy = 0.5 * (bilinear(previous, x, y + 1) - bilinear(previous, x, y - 1));
+        const double e = current.at(c, r) - warped;
+        gxx += gx * gx;
+        gxy += gx * gy;
+        gyy += gy * gy;
+        bx += gx * e;
+        by += gy * e;
+      }
+    }
+    const double det = gxx * gyy - gxy * gxy;
+    // No texture to register (both gradients nil, or all along one direction).
+    if (!(det > 1e-9 * (gxx + gyy) * (gxx + gyy)) || gxx + gyy <= 0.0) return std::nullopt;
+    const double ddx = -(gyy * bx - gxy * by) / det;
+    const double ddy = -(gxx * by - gxy * bx) / det;
+    d.dx_px += ddx;
+    d.dy_px += ddy;
+    if (std::abs(ddx) < 1e-5 && std::abs(ddy) < 1e-5) break;
+  }
+  return d;
+}
+
 std::optional<std::uint64_t> frame_at(const std::vector<TickSeen>& ticks, std::int64_t arrival_ns) {
   const auto it = std::upper_bound(ticks.begin(), ticks.end(), arrival_ns,
                                    [](std::int64_t t, const TickSeen& tick) { return t < tick.arrival_ns; });

@@ -72,6 +72,42 @@ ChannelOnset earliest_onset(const std::vector<std::vector<Point>>& channels, std
 /// a column range outside 0..1.
 double blueness(const visual::Image& image, double first_column = 0.0, double end_column = 1.0);
 
+/// A rectangle of a picture as fractions of its width and height (0..1, first < end).
+struct Region {
+  double first_column = 0.0, end_column = 1.0, first_row = 0.0, end_row = 1.0;
+};
+
+/// How tilted the horizon is: the sky's blueness, the mean of max(blue - red, 0) / 255, of the
+/// left half of the region minus that of its right half. A
+/// level horizon gives the two halves the same sky; the aircraft rolling right turns the horizon
+/// anticlockwise on the picture, raising its right end (less sky on the right): the figure grows
+/// with the tilt, and a pitch (both halves alike) leaves it. Only what is bluer than red counts,
+/// so that the ground texture's colours (green and brown: red above blue), which flow past with
+/// the aircraft and differ between the halves, add nothing. Throws for an empty image or a
+/// region outside 0..1 or less than two columns wide.
+double blueness_tilt(const visual::Image& image, const Region& region = {});
+
+/// A picture's luminance (BT.709, 0..255) as floats, rows from the top: what image_shift compares.
+struct Luma {
+  int width_px = 0;
+  int height_px = 0;
+  std::vector<float> value;  // width_px * height_px
+  float at(int column, int row) const { return value[static_cast<std::size_t>(row) * width_px + column]; }
+};
+Luma luminance(const visual::Image& image);
+
+/// How far the content of `current` moved from where it was in `previous` [px; + right, + down]:
+/// the translation d with current(x) ~ previous(x - d) over `region` (less a margin of 4 px),
+/// found by Lucas-Kanade least squares on the luminance gradients, iterated with a bilinear warp
+/// of `previous` (exact to a small fraction of a pixel for shifts up to about a pixel on a
+/// smooth texture). A heading change moves a view of the ground (or a heading scale)
+/// sideways: dx, accumulated frame to frame, is then the heading in pixels. Empty when the
+/// region has no gradient to register (a uniform picture) or the two pictures differ in size.
+struct Shift {
+  double dx_px = 0.0, dy_px = 0.0;
+};
+std::optional<Shift> image_shift(const Luma& previous, const Luma& current, const Region& region);
+
 /// A tick as a monitor saw it: frame number and the monotonic time it arrived [ns].
 struct TickSeen {
   std::uint64_t frame = 0;

@@ -1,5 +1,5 @@
 // `fedsim latency`'s pure half: onset detection against a trend, a picture's blueness (its
-// horizon), the frame an arrival falls in, and the statistics. Each test has its negative
+// horizon), its tilt (roll), the sideways shift between two pictures (yaw), the frame an arrival falls in, and the statistics. Each test has its negative
 // control: the same series or picture without the change finds nothing.
 #include "fedsim/latency_detect.hpp"
 
@@ -178,6 +178,96 @@ TEST(LatencyBlueness, AColumnRangeLooksOnlyThere) {
   EXPECT_NE(blueness(image), blueness(sky_over_ground(300, 100, 50.0)));
   EXPECT_THROW(blueness(image, 0.5, 0.5), std::invalid_argument);
   EXPECT_THROW(blueness(visual::Image{}), std::invalid_argument);
+}
+
+// A horizon through the picture's centre tilted by `slope` rows per column (+: its right end
+// lower), the edge pixel blended by its sky part as in sky_over_ground; the ground textured
+// (stripes of its red and blue, as grass and fields are), which the tilt must not see.
+visual::Image tilted_horizon(int width, int height, double slope, int ground_shift = 0) {
+  visual::Image image(width, height);
+  const visual::Rgba8 sky{60, 120, 220, 255};
+  for (int c = 0; c < width; ++c) {
+    const double horizon_row = 0.5 * height + slope * (c + 0.5 - 0.5 * width);
+    for (int r = 0; r < height; ++r) {
+      const double sky_part = std::clamp(horizon_row - r, 0.0, 1.0);
+      const bool field = ((c + ground_shift) / 7 + r / 5) % 2 == 0;
+      const visual::Rgba8 ground = field ? visual::Rgba8{140, 90, 30, 255} : visual::Rgba8{70, 110, 40, 255};
+      auto mix = [&](std::uint8_t sv, std::uint8_t gv) {
+        return static_cast<std::uint8_t>(std::lround(sky_part * sv + (1.0 - sky_part) * gv));
+      };
+      image.set(c, r, {mix(sky.r, ground.r), mix(sky.g, ground.g), mix(sky.b, ground.b), 255});
+    }
+  }
+  return image;
+}
+
+TEST(LatencyTilt, FollowsTheHorizonsTiltAndNotItsHeightOrTheGround) {
+  const double level = blueness_tilt(tilted_horizon(200, 160, 0.0));
+  EXPECT_NEAR(level, 0.0, 1e-3);  // the ground's stripes (red above blue) add nothing
+  // Right end lower by 0.2 px (0.001 rows a column): more sky on the right, the figure falls.
+  const double right_down = blueness_tilt(tilted_horizon(200, 160, 0.001));
+  const double right_up = blueness_tilt(tilted_horizon(200, 160, -0.001));
+  EXPECT_LT(right_down, level);
+  EXPECT_GT(right_up, level);
+  // Each half's mean horizon moves by 50 columns x 0.001 rows; the sky's B-R is 160. A blended
+  // edge pixel counts only where its blue exceeds its red (more than 41 % sky here): a little
+  // less than the whole row's share.
+  const double whole_rows = 2.0 * 0.05 * 160.0 / 255.0 / 160.0;
+  EXPECT_GT(level - right_down, 0.5 * whole_rows);
+  EXPECT_LT(level - right_down, 1.05 * whole_rows);
+  // Negative controls: the ground's texture moved sideways, a level picture the same again.
+  EXPECT_EQ(blueness_tilt(tilted_horizon(200, 160, 0.0, 3)), level);
+  EXPECT_EQ(blueness_tilt(tilted_horizon(200, 160, 0.0)), level);
+  EXPECT_THROW(blueness_tilt(visual::Image{}), std::invalid_argument);
+  EXPECT_THROW(blueness_tilt(tilted_horizon(20, 10, 0.0), Region{0.6, 0.4, 0.0, 1.0}), std::invalid_argument);
+  // A region: the rows above the sky's part see no horizon, so no tilt; its own columns only.
+  const visual::Image tilted = tilted_horizon(200, 160, 0.001);
+  EXPECT_EQ(blueness_tilt(tilted, Region{0.0, 1.0, 0.0, 0.4}), 0.0);
+  EXPECT_LT(blueness_tilt(tilted, Region{0.25, 0.75, 0.4, 0.6}), 0.0);
+}
+
+// A smooth texture (two crossed sinusoids and a slower one) displaced by (dx, dy) pixels.
+Luma texture(int width, int height, double dx, double dy) {
+  Luma l{width, height, std::vector<float>(static_cast<std::size_t>(width) * height)};
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c) {
+      const double x = c - dx, y = r - dy;
+      l.value[static_cast<std::size_t>(r) * width + c] =
+          static_cast<float>(120.0 + 40.0 * std::sin(0.31 * x + 0.2 * y) + 30.0 * std::cos(0.23 * y - 0.11 * x) +
+                             20.0 * std::sin(0.07 * x));
+    }
+  }
+  return l;
+}
+
+TEST(LatencyShift, RegistersSubPixelAndPixelShifts) {
+  const Luma before = texture(200, 160, 0.0, 0.0);
+  for (const auto& [dx, dy] : std::vector<std::pair<double, double>>{{0.3, 0.0}, {-0.05, 0.35}, {1.2, -0.4}, {0.01, 0.0}}) {
+    const auto d = image_shift(before, texture(200, 160, dx, dy), Region{});
+    ASSERT_TRUE(d.has_value());
+    EXPECT_NEAR(d->dx_px, dx, 0.002 + 0.01 * std::abs(dx)) << dx << ", " << dy;
+    EXPECT_NEAR(d->dy_px, dy, 0.002 + 0.01 * std::abs(dy)) << dx << ", " << dy;
+  }
+  // Negative control: the same picture again has not moved.
+  const auto still = image_shift(before, texture(200, 160, 0.0, 0.0), Region{});
+  ASSERT_TRUE(still.has_value());
+  EXPECT_EQ(still->dx_px, 0.0);
+  EXPECT_EQ(still->dy_px, 0.0);
+}
+
+TEST(LatencyShift, ARegionLooksOnlyThereAndAUniformPictureHasNoAnswer) {
+  const Luma before = texture(200, 160, 0.0, 0.0);
+  Luma after = texture(200, 160, 0.4, 0.0);
+  // The lower half moved; the upper half, put back, did not.
+  for (int r = 0; r < 80; ++r) {
+    for (int c = 0; c < 200; ++c) after.value[static_cast<std::size_t>(r) * 200 + c] = before.at(c, r);
+  }
+  EXPECT_NEAR(image_shift(before, after, Region{0.0, 1.0, 0.55, 1.0})->dx_px, 0.4, 0.01);
+  EXPECT_NEAR(image_shift(before, after, Region{0.0, 1.0, 0.0, 0.45})->dx_px, 0.0, 1e-9);
+  const Luma flat{200, 160, std::vector<float>(200 * 160, 90.0f)};
+  EXPECT_FALSE(image_shift(flat, flat, Region{}).has_value());
+  EXPECT_FALSE(image_shift(before, texture(100, 160, 0.0, 0.0), Region{}).has_value());
+  EXPECT_THROW(image_shift(before, before, Region{0.5, 0.4, 0.0, 1.0}), std::invalid_argument);
 }
 
 TEST(LatencyFrames, AnArrivalBelongsToTheLastTickBeforeIt) {
