@@ -70,8 +70,10 @@ class Federate::PortBindings final : public PortBinder {
  public:
   explicit PortBindings(Federate& federate) : federate_(federate) {}
 
-  void refresh_inputs(std::uint64_t frame) {
-    for (auto& refresh : refreshers_) refresh(frame);
+  void refresh_inputs(const FrameContext& ctx) {
+    first_sample_frames_ = timing::SilenceWatch::first_sample_frames_for(
+        federate_.options().silent_frames, ctx.mode == msg::TIMING_MODE_REALTIME, ctx.frame_period_s);
+    for (auto& refresh : refreshers_) refresh(ctx.frame);
   }
 
 #define FEDSIM_BIND_OVER_DDS(Msg)                                  \
@@ -118,8 +120,10 @@ class Federate::PortBindings final : public PortBinder {
     const std::uint64_t limit = federate_.options().silent_frames;
     if (limit == 0) return;
     refresh = [&sub, inner = std::move(refresh), watch = timing::SilenceWatch(limit),
-               component = federate_.component_, log = federate_.log_, lockstep](std::uint64_t frame) mutable {
+               component = federate_.component_, log = federate_.log_, lockstep,
+               &first_sample_frames = first_sample_frames_](std::uint64_t frame) mutable {
       const bool updated = inner(frame);
+      watch.set_first_sample_frames(first_sample_frames);
       const auto event = watch.observe(frame, sub.matched_writers() > 0, updated);
       if (lockstep) lockstep->silent.store(watch.silent());
       switch (event) {
@@ -156,6 +160,7 @@ class Federate::PortBindings final : public PortBinder {
 
   Federate& federate_;
   std::vector<std::function<bool(std::uint64_t)>> refreshers_;  // true: a new sample
+  std::uint64_t first_sample_frames_ = 0;  // this frame's first-sample limit of the silence watches
 };
 
 // ---- Federate ---------------------------------------------------------------------------------
@@ -337,7 +342,7 @@ void Federate::run_frame(const msg::FrameTick& tick, bool late) {
       start_ns > tick.publish_time_ns() ? start_ns - tick.publish_time_ns() : 0;
   const std::uint64_t faults_before = component_->fault_count();
   try {
-    bindings_->refresh_inputs(ctx.frame);
+    bindings_->refresh_inputs(ctx);
     for (const auto& cmd : commands_now_) component_->on_command(cmd);
     component_->step(ctx);
   } catch (const std::exception& e) {

@@ -49,6 +49,29 @@ TEST(SilenceWatch, AMatchedWriterThatNeverWritesIsSilent) {
   EXPECT_EQ(watch.observe(106, true, false), Event::kSilent);
 }
 
+TEST(SilenceWatch, AJoiningWriterGetsTheFirstSampleLimitThenTheShortOne) {
+  SilenceWatch watch(5);
+  watch.set_first_sample_frames(50);
+  watch.observe(1, true, false);
+  for (std::uint64_t f = 2; f < 51; ++f) EXPECT_EQ(watch.observe(f, true, false), Event::kNone) << f;  // joining
+  EXPECT_EQ(watch.observe(51, true, true), Event::kNone);  // its first sample, at 50 frames
+  for (std::uint64_t f = 52; f < 56; ++f) EXPECT_EQ(watch.observe(f, true, false), Event::kNone);
+  EXPECT_EQ(watch.observe(56, true, false), Event::kSilent);  // then 5 frames, not 50
+  // A writer that unmatches and matches again is a new writer: the first-sample limit again.
+  watch.observe(57, false, false);
+  watch.observe(58, true, false);
+  for (std::uint64_t f = 59; f < 108; ++f) EXPECT_EQ(watch.observe(f, true, false), Event::kNone) << f;
+  EXPECT_EQ(watch.observe(108, true, false), Event::kSilent);  // never wrote: 50 frames
+}
+
+TEST(SilenceWatch, TheFirstSampleLimitIsFramesInLockstepAndSecondsInRealtime) {
+  EXPECT_EQ(SilenceWatch::first_sample_frames_for(10, false, 0.02), 10u);  // each frame waited
+  EXPECT_EQ(SilenceWatch::first_sample_frames_for(10, true, 0.02), 250u);  // 5 s at 50 Hz
+  EXPECT_EQ(SilenceWatch::first_sample_frames_for(10, true, 1.0), 10u);    // never below the limit
+  EXPECT_EQ(SilenceWatch::first_sample_frames_for(10, true, 0.0), 10u);    // no period known
+  EXPECT_EQ(SilenceWatch::first_sample_frames_for(0, true, 0.02), 250u);   // (0: the watch is off)
+}
+
 TEST(SilenceWatch, AnUnmatchedWriterEndsTheEpisodeWithoutAnEvent) {
   SilenceWatch watch(3);
   watch.observe(1, true, true);
