@@ -92,11 +92,16 @@ void StallEntryPilot::fly_recovery(const PilotObservation& a, double dt_s) {
   // angle of attack falls below the stall at once and the aircraft climbs away.
   const double pitch_error_deg = (start_theta_rad_ - a.theta_rad) * kRadToDeg;
   const double pitch_integral = recovery_integral_deg_s_ + pitch_error_deg * dt_s;
-  const double wanted = start_elevator_ - p_.pitch_to_elevator_per_deg * pitch_error_deg -
-                        p_.pitch_to_elevator_per_deg_s * pitch_integral +
-                        p_.pitch_rate_to_elevator_per_dps * a.q_radps * kRadToDeg;
+  const double wanted = elevator_for(pitch_error_deg, pitch_integral, a);
   elevator_ = std::clamp(wanted, -1.0, 1.0);
   if (wanted == elevator_) recovery_integral_deg_s_ = pitch_integral;
+}
+
+double StallEntryPilot::elevator_for(double pitch_error_deg, double pitch_integral_deg_s,
+                                     const PilotObservation& a) const {
+  return start_elevator_ - p_.pitch_to_elevator_per_deg * pitch_error_deg -
+         p_.pitch_to_elevator_per_deg_s * pitch_integral_deg_s +
+         p_.pitch_rate_to_elevator_per_dps * a.q_radps * kRadToDeg;
 }
 
 void StallEntryPilot::fly_entry(const PilotObservation& a, double dt_s) {
@@ -115,9 +120,7 @@ void StallEntryPilot::fly_entry(const PilotObservation& a, double dt_s) {
                                    p_.speed_rate_to_pitch_deg_per_kt_s * rate_error;
   const double pitch_error_deg = pitch_command_deg - a.theta_rad * kRadToDeg;
   const double pitch_integral = pitch_integral_deg_s_ + pitch_error_deg * dt_s;
-  const double wanted = start_elevator_ - p_.pitch_to_elevator_per_deg * pitch_error_deg -
-                        p_.pitch_to_elevator_per_deg_s * pitch_integral +
-                        p_.pitch_rate_to_elevator_per_dps * a.q_radps * kRadToDeg;
+  const double wanted = elevator_for(pitch_error_deg, pitch_integral, a);
   previous_elevator_ = elevator_;
   elevator_ = std::clamp(wanted, -1.0, 1.0);
   // Integrate only while the elevator can still act on it (no wind-up against a stop).

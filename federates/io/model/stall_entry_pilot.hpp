@@ -95,6 +95,9 @@ class StallEntryPilot final : public InputSource {
   void start(const PilotObservation& aircraft);
   void fly_entry(const PilotObservation& aircraft, double dt_s);
   void fly_recovery(const PilotObservation& aircraft, double dt_s);
+  /// The inner loop: the elevator command (unclamped, incl. trim) for a pitch error (command -
+  /// attitude) and its integral, about the entry's trimmed elevator, damped by the pitch rate.
+  double elevator_for(double pitch_error_deg, double pitch_integral_deg_s, const PilotObservation& aircraft) const;
   void watch_for_the_stall(const PilotObservation& aircraft, double dt_s);
   void identify(const PilotObservation& aircraft, const char* indication);
 
