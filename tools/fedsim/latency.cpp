@@ -47,6 +47,10 @@ namespace {
 constexpr std::uint16_t kVisualChannel = 0;  // the latency channel of fedsim-visual
 constexpr std::uint16_t kPfdChannel = 100;   // fedsim-displays' first display (--displays pfd)
 const std::vector<std::string> kPaths = {"controls", "flight_state", "visual_image", "motion_platform", "pfd_image"};
+// --loader: the control loader's position between the force and the flight state.
+const std::vector<std::string> kLoaderPaths = {"controls", "loader", "flight_state", "visual_image", "motion_platform",
+                                               "pfd_image"};
+const std::vector<std::string>& paths_of(const LatencyOptions& o) { return o.loader ? kLoaderPaths : kPaths; }
 
 // ---- what the probe sees ----------------------------------------------------------------------
 
@@ -61,6 +65,15 @@ struct ControlsRecord {
   double sim_time_s;
   double elevator, aileron, rudder;
   std::int64_t arrival_ns;
+  std::array<double, 3> force_n;  // pilot_force_n: column, wheel, pedals (--loader's step)
+};
+/// fedsim/control_loading_state (--loader): each control's position and the loader's status.
+struct LoaderRecord {
+  std::uint64_t frame;
+  msg::ControlLoadingStatus status;
+  std::array<double, 3> position;  // pitch, roll, yaw, normalised
+  std::int64_t arrival_ns;
+  std::string cut_off_reason;
 };
 struct StateRecord {
   std::uint64_t frame;
@@ -84,21 +97,22 @@ struct AxisSpec {
   const char* visual_what;
   const char* pfd_what;
   double picture_floor;        // the measure's floor
+  int index;                   // --loader: the force sensor and the loader's control (0 pitch, 1 roll, 2 yaw)
 };
 
 const AxisSpec& axis_spec(const std::string& axis) {
   static const AxisSpec pitch{"elevator", "pitch attitude and rate", "theta_rad", "q_radps",
                               [](const StateRecord& x) { return x.theta_rad; }, [](const StateRecord& x) { return x.q_radps; },
                               [](const ControlsRecord& c) { return c.elevator; }, "blueness", "the visual's horizon",
-                              "the PFD's horizon", 2e-5};
+                              "the PFD's horizon", 2e-5, 0};
   static const AxisSpec roll{"aileron", "roll attitude and rate", "phi_rad", "p_radps",
                              [](const StateRecord& x) { return x.phi_rad; }, [](const StateRecord& x) { return x.p_radps; },
                              [](const ControlsRecord& c) { return c.aileron; }, "tilt", "the visual's horizon tilt",
-                             "the PFD's horizon tilt, bank pointer and slip indicator", 2e-5};
+                             "the PFD's horizon tilt, bank pointer and slip indicator", 2e-5, 1};
   static const AxisSpec yaw{"rudder", "heading and yaw rate", "psi_rad", "r_radps",
                             [](const StateRecord& x) { return x.psi_rad; }, [](const StateRecord& x) { return x.r_radps; },
                             [](const ControlsRecord& c) { return c.rudder; }, "shift_px",
-                            "the visual's ground (sideways shift)", "the PFD's heading scale (sideways shift)", 0.002};
+                            "the visual's ground (sideways shift)", "the PFD's heading scale (sideways shift)", 0.002, 2};
   return axis == "roll" ? roll : axis == "yaw" ? yaw : pitch;
 }
 struct MotionRecord {
@@ -138,6 +152,7 @@ struct Seen {
   std::vector<MotionRecord> motion;
   std::vector<ImageStatusRecord> image_status;
   std::vector<PictureRecord> pictures;
+  std::vector<LoaderRecord> loader;  // --loader only
 };
 
 std::int64_t now_ns() { return static_cast<std::int64_t>(util::monotonic_ns()); }
@@ -146,7 +161,7 @@ std::int64_t now_ns() { return static_cast<std::int64_t>(util::monotonic_ns()); 
 /// its arrival time on the middleware's listener thread (nothing else happens there).
 class Probe {
  public:
-  Probe(const runtime::ParticipantOptions& dds, bool lockstep) : dds_(runtime::DdsParticipant::create(dds)) {
+  Probe(const runtime::ParticipantOptions& dds, bool lockstep, bool loader) : dds_(runtime::DdsParticipant::create(dds)) {
     // State topics: the writers are reliable in lockstep (lockstep_data), best effort in realtime.
     const std::string state_qos = lockstep ? "lockstep_data" : "state";
     ticks_ = std::make_unique<runtime::Subscription<msg::FrameTick>>(
@@ -159,8 +174,9 @@ class Probe {
         dds_, runtime::topics::pilot_controls, "", [this](const msg::PilotControls& c, const auto&) {
           const std::int64_t arrival = now_ns();
           std::lock_guard lock(mutex_);
-          seen_.controls.push_back(
-              {c.stamp().frame(), c.stamp().sim_time_s(), c.elevator(), c.aileron(), c.rudder(), arrival});
+          const auto& f = c.pilot_force_n();
+          seen_.controls.push_back({c.stamp().frame(), c.stamp().sim_time_s(), c.elevator(), c.aileron(), c.rudder(),
+                                    arrival, {f[0], f[1], f[2]}});
         });
     states_ = std::make_unique<runtime::Subscription<msg::AircraftState>>(
         dds_, runtime::topics::aircraft_state, state_qos, [this](const msg::AircraftState& s, const auto&) {
@@ -189,6 +205,18 @@ class Probe {
           std::lock_guard lock(mutex_);
           seen_.pictures.push_back({p.channel_id(), p.stamp().frame(), arrival, p.data()});
         });
+    if (loader) {
+      // The loader writes lockstep_data in lockstep (--state-qos), the catalogue's profile in realtime.
+      loader_ = std::make_unique<runtime::Subscription<msg::ControlLoadingState>>(
+          dds_, runtime::topics::control_loading_state, lockstep ? "lockstep_data" : "",
+          [this](const msg::ControlLoadingState& l, const auto&) {
+            const std::int64_t arrival = now_ns();
+            std::lock_guard lock(mutex_);
+            seen_.loader.push_back({l.stamp().frame(), l.status(),
+                                    {l.pitch().position(), l.roll().position(), l.yaw().position()}, arrival,
+                                    l.cut_off_reason().to_string()});
+          });
+    }
   }
   /// Stops every reader (no handler runs after this) and hands over what was seen.
   Seen finish() {
@@ -198,6 +226,7 @@ class Probe {
     motion_->close();
     status_->close();
     pictures_->close();
+    if (loader_) loader_->close();
     std::lock_guard lock(mutex_);
     return std::move(seen_);
   }
@@ -212,6 +241,7 @@ class Probe {
   std::unique_ptr<runtime::Subscription<msg::MotionPlatformState>> motion_;
   std::unique_ptr<runtime::Subscription<msg::VisualChannelStatus>> status_;
   std::unique_ptr<runtime::Subscription<msg::VisualPicture>> pictures_;
+  std::unique_ptr<runtime::Subscription<msg::ControlLoadingState>> loader_;
 };
 
 // ---- the federation ---------------------------------------------------------------------------
@@ -277,10 +307,18 @@ std::string deployment_yaml(const LatencyOptions& o, const fs::path& dir) {
     << "participant_profile: " << quoted(o.dds.participant_profile) << "\n"
     << "timing:\n  args: [--frames, \"" << total_frames(o) << "\"]\n"
     << "federates:\n"
-    << "  - name: io\n    binary: fedsim-io\n    args: [--profile, " << quoted((dir / "step_profile.csv").string()) << "]\n"
+    << "  - name: io\n    binary: fedsim-io\n    args: [--profile, " << quoted((dir / "step_profile.csv").string())
+    << (o.loader ? ", --loader-in-the-loop" : "") << "]\n"
     << "  - name: flight\n    binary: fedsim-flight\n"
     << "    args: [--aircraft, \"${DATA_DIR}/aircraft/c172.yaml\", --trim, level, --alt-ft, \"4000\", --ktas, \"100\",\n"
-    << "           --heading, \"90\", --lat, \"37.6\", --lon, \"-122.3\", --controls, relative" << state_qos << "]\n"
+    << "           --heading, \"90\", --lat, \"37.6\", --lon, \"-122.3\", --controls, relative" << state_qos << "]\n";
+  if (o.loader) {
+    // The control loader between the pilot's force and the io's primaries (io_component.hpp),
+    // with its default feel; --aircraft schedules its stick shaker (as deploy/ils-autoland.yaml).
+    y << "  - name: control_loading\n    binary: fedsim-control-loading\n"
+      << "    args: [--aircraft, \"${DATA_DIR}/aircraft/c172.yaml\"" << state_qos << "]\n";
+  }
+  y
     << "  - name: motion\n    binary: fedsim-motion\n"
     << "    args: [--parameters, \"${DATA_DIR}/motion/washout.yaml\"" << state_qos << "]\n"
     << "  - name: visual\n    binary: fedsim-visual\n"
@@ -377,6 +415,7 @@ struct StepResult {
   double time_s = 0.0, amplitude = 0.0;
   std::optional<std::uint64_t> step_frame;  // S
   std::map<std::string, PathResult> paths;
+  std::optional<long> io_primary_frames;    // --loader: the io first reports the moved control in S + this
 };
 
 /// Yaw: where the picture shifts sideways with heading. The visual: all of its view of the
@@ -525,13 +564,21 @@ struct Analysis {
     return opt;
   }
 
+  /// The input stepped: the axis's control, or with --loader its force sensor (pilot_force_n).
+  std::vector<Point> input_series() const {
+    if (!o.loader) return series_of(seen.controls, spec.control_of);
+    const int i = spec.index;
+    return series_of(seen.controls, [i](const ControlsRecord& c) { return c.force_n[i]; });
+  }
+  std::string input_name() const { return o.loader ? axis_force_channel(o.axis) : std::string(spec.control); }
+
   PathResult controls_path(std::uint64_t s, double time_s) const {
     PathResult r;
     latency::OnsetOptions opt = onset_options(1e-6);
     opt.min_threshold = 1e-6;
-    const auto onset = latency::find_onset(series_of(seen.controls, spec.control_of), s - 1, opt);
+    const auto onset = latency::find_onset(input_series(), s - 1, opt);
     if (!onset.frame) {
-      r.problem = no_response(onset, (std::string("the ") + spec.control).c_str());
+      r.problem = no_response(onset, ("the " + input_name()).c_str());
       // S is the first frame the io stepped at or after the step's time: past the doublet's
       // end, its ticks were skipped (a loaded machine) and the step never left it.
       const ControlsRecord* at_s = first_at(seen.controls, s);
@@ -548,6 +595,81 @@ struct Analysis {
     r.ms = ms_since_tick(s, c->arrival_ns);
     r.in_frame_ms = ms_since_tick(c->frame, c->arrival_ns);
     return r;
+  }
+
+  /// --loader: the loader's position of the axis's control leaves its trend (floor 1e-6 of the
+  /// travel). A loader not ACTIVE (fading in, or cut off to SAFE: an overspeed, stale data) has
+  /// no response to measure: named.
+  PathResult loader_path(std::uint64_t s) const {
+    PathResult r;
+    const auto not_active = [](const LoaderRecord& l) {
+      return std::string("no response possible: the control loader was ") +
+             (l.status == msg::CONTROL_LOADING_SAFE ? "safe" : "fading in") + " at frame " + std::to_string(l.frame) +
+             (l.cut_off_reason.empty() ? std::string() : " (" + l.cut_off_reason + ")");
+    };
+    if (const LoaderRecord* at_step = first_at(seen.loader, s); at_step && at_step->status != msg::CONTROL_LOADING_ACTIVE) {
+      r.problem = not_active(*at_step);
+      return r;
+    }
+    const int i = spec.index;
+    const auto onset =
+        latency::find_onset(series_of(seen.loader, [i](const LoaderRecord& l) { return l.position[i]; }), s, onset_options(1e-6));
+    if (!onset.frame) {
+      r.problem = no_response(onset, "the loader's control position");
+      return r;
+    }
+    const LoaderRecord* l = first_at(seen.loader, *onset.frame);
+    if (r.problem = lost_before(seen.loader, l->frame, s); !r.problem.empty()) return r;
+    for (const LoaderRecord& before : seen.loader) {
+      if (before.frame > s && before.frame <= l->frame && before.status != msg::CONTROL_LOADING_ACTIVE) {
+        r.problem = not_active(before);
+        return r;
+      }
+    }
+    r.responded = true;
+    r.detail = std::string(spec.control) + " position " + detail_of(onset);
+    r.output_frame = r.state_frame = l->frame;
+    r.frames = static_cast<long>(l->frame) - static_cast<long>(s);
+    r.ms = ms_since_tick(s, l->arrival_ns);
+    r.in_frame_ms = ms_since_tick(l->frame, l->arrival_ns);
+    return r;
+  }
+
+  /// --loader: the force reaches the flight state only through the loader's control and the io's
+  /// report of it, 2 frames or more after S, so an output found to change before its cause could
+  /// reach it left its trend on its own (a horizon crossing a pixel row while the aircraft still
+  /// pitches from the step before, a washout drift): with the loader's smaller first frames that
+  /// happens, and such a step is named rather than counted. Without --loader the step reaches the
+  /// flight state in the first frame and nothing is checked (the reports as they were).
+  void reject_responses_before_their_cause(StepResult& result) const {
+    const std::uint64_t s = *result.step_frame;
+    const auto reject = [](PathResult& p, const std::string& why) {
+      if (!p.responded) return;
+      p.responded = false;
+      p.problem = "no valid response: " + why + " (the output's own trend, not the step)";
+    };
+    PathResult& loader = result.paths["loader"];
+    PathResult& state = result.paths["flight_state"];
+    if (loader.responded && result.io_primary_frames && state.responded &&
+        static_cast<long>(state.output_frame - s) < *result.io_primary_frames) {
+      reject(state, "the flight state changed in S+" + std::to_string(state.output_frame - s) +
+                        ", before the io reported the loader's control (S+" + std::to_string(*result.io_primary_frames) + ")");
+    }
+    if (!state.responded) return;
+    for (const char* name : {"visual_image", "motion_platform", "pfd_image"}) {
+      PathResult& p = result.paths[name];
+      if (p.responded && p.state_frame < state.output_frame) {
+        reject(p, std::string(name) + " changed with state S+" + std::to_string(static_cast<long>(p.state_frame - s)) +
+                      ", before the flight state responded (S+" + std::to_string(state.output_frame - s) + ")");
+      }
+    }
+  }
+
+  /// --loader: the first frame the io reports the loader's moved control as its primary.
+  std::optional<long> io_primary_frames(std::uint64_t s) const {
+    const auto onset = latency::find_onset(series_of(seen.controls, spec.control_of), s, onset_options(1e-6));
+    if (!onset.frame) return std::nullopt;
+    return static_cast<long>(*onset.frame) - static_cast<long>(s);
   }
 
   PathResult state_path(std::uint64_t s) const {
@@ -675,15 +797,20 @@ struct Analysis {
     result.amplitude = step_amplitude(o, k);
     result.step_frame = step_frame(result.time_s);
     if (!result.step_frame) {
-      for (const auto& p : kPaths) result.paths[p].problem = "no response: no controls sample at the step's time";
+      for (const auto& p : paths_of(o)) result.paths[p].problem = "no response: no controls sample at the step's time";
       return result;
     }
     const std::uint64_t s = *result.step_frame;
     result.paths["controls"] = controls_path(s, result.time_s);
+    if (o.loader) {
+      result.paths["loader"] = loader_path(s);
+      result.io_primary_frames = io_primary_frames(s);
+    }
     result.paths["flight_state"] = state_path(s);
     result.paths["visual_image"] = image_path(s, kVisualChannel, spec.visual_what);
     result.paths["motion_platform"] = motion_path(s);
     result.paths["pfd_image"] = image_path(s, kPfdChannel, spec.pfd_what);
+    if (o.loader) reject_responses_before_their_cause(result);
     if (!tick_by_frame.count(s) && !lockstep) {
       for (auto& [name, p] : result.paths) {
         if (p.responded && !p.ms) p.problem = "tick " + std::to_string(s) + " not seen: no time";
@@ -697,6 +824,7 @@ struct Analysis {
 
 const std::map<std::string, std::string> kPathTitle = {
     {"controls", "input (io: pilot_controls)"},
+    {"loader", "input -> control loader (position)"},
     {"flight_state", "input -> flight state"},
     {"visual_image", "input -> visual image"},
     {"motion_platform", "input -> motion platform"},
@@ -707,8 +835,13 @@ const std::map<std::string, std::string> kOutputFederate = {
 /// Where one step's frames went on one path: io's hop (the state that first responds, minus S),
 /// frames the output's own input showed no visible change (detection), the hop into the output
 /// federate, and the time within its frame.
-std::string where_frames_go(const std::string& path, std::uint64_t s, const PathResult& p, const PathResult& state) {
+std::string where_frames_go_loaded(const std::string& path, std::uint64_t s, const PathResult& p, const PathResult& state,
+                                  const PathResult& loader, std::optional<long> io_primary);
+
+std::string where_frames_go(const std::string& path, std::uint64_t s, const PathResult& p, const PathResult& state,
+                            const PathResult* loader = nullptr, std::optional<long> io_primary = std::nullopt) {
   if (!p.responded) return p.problem;
+  if (loader) return where_frames_go_loaded(path, s, p, state, *loader, io_primary);
   const auto rel = [s](std::uint64_t f) { return static_cast<long>(f) - static_cast<long>(s); };
   std::ostringstream w;
   if (path == "controls") {
@@ -729,6 +862,43 @@ std::string where_frames_go(const std::string& path, std::uint64_t s, const Path
       if (hidden != 0) w << ", not yet visible " << hidden;
       w << "; " << fed << " draws state S+" << rel(p.state_frame) << " in S+" << rel(p.output_frame);
     }
+  }
+  return w.str();
+}
+
+/// --loader: the hops io -> loader (the force), loader -> io (its position, reported as the
+/// primary), io -> flight, flight -> the output federate (docs/latency.md).
+std::string where_frames_go_loaded(const std::string& path, std::uint64_t s, const PathResult& p, const PathResult& state,
+                                  const PathResult& loader, std::optional<long> io_primary) {
+  const auto rel = [s](std::uint64_t f) { return static_cast<long>(f) - static_cast<long>(s); };
+  std::ostringstream w;
+  if (path == "controls") {
+    w << "io samples the force at the start of frame S and writes it in S";
+    return w.str();
+  }
+  if (path == "loader") {
+    w << "io->loader " << p.frames << ": the loader reads the force written in S and moves the control in S+" << p.frames;
+    return w.str();
+  }
+  if (!loader.responded || !io_primary) return "(the loader's control, or the io's report of it, gave no response)";
+  const long l = loader.frames, io = *io_primary;
+  w << "io->loader " << l << ", loader->io " << io - l;
+  if (path == "flight_state") {
+    w << ", io->flight " << p.frames - io << "; io reports the position in S+" << io << ", flight computes the state in S+"
+      << p.frames;
+    return w.str();
+  }
+  if (!state.responded) return w.str() + " (the flight state gave no response)";
+  const long f = rel(state.output_frame);
+  const std::string fed = kOutputFederate.at(path);
+  w << ", io->flight " << f - io;
+  if (path == "motion_platform") {
+    w << ", flight->motion " << p.frames - f << "; motion moves the jacks in S+" << p.frames;
+  } else {
+    const long hidden = rel(p.state_frame) - f;
+    w << ", flight->" << fed << ' ' << rel(p.output_frame) - rel(p.state_frame);
+    if (hidden != 0) w << ", not yet visible " << hidden;
+    w << "; " << fed << " draws state S+" << rel(p.state_frame) << " in S+" << rel(p.output_frame);
   }
   return w.str();
 }
@@ -773,6 +943,11 @@ void write_samples_csv(const fs::path& path, const Analysis& a) {
   const AxisSpec& spec = a.spec;
   f << "path,channel,frame,value\n" << std::setprecision(12);
   for (const auto& c : a.seen.controls) f << "controls," << spec.control << ',' << c.frame << ',' << spec.control_of(c) << '\n';
+  if (a.o.loader) {
+    const std::string force = axis_force_channel(a.o.axis);
+    for (const auto& c : a.seen.controls) f << "controls," << force << ',' << c.frame << ',' << c.force_n[spec.index] << '\n';
+    for (const auto& l : a.seen.loader) f << "loader," << spec.control << "_position," << l.frame << ',' << l.position[spec.index] << '\n';
+  }
   for (const auto& s : a.seen.states) f << "flight_state," << spec.attitude << ',' << s.frame << ',' << spec.attitude_of(s) << '\n';
   for (const auto& s : a.seen.states) f << "flight_state," << spec.rate << ',' << s.frame << ',' << spec.rate_of(s) << '\n';
   for (const auto& m : a.seen.motion) {
@@ -802,8 +977,26 @@ double default_amplitude(const std::string& axis) {
 
 std::string axis_control(const std::string& axis) { return axis_spec(axis).control; }
 
+constexpr double kLoaderIntervalS = 6.0;  // --loader's default --interval [s]
+
+double default_force_n(const std::string& axis) {
+  // As much as the loader takes without tripping: its overspeed trip is 2 m/s at the grip
+  // (federates/control_loading/model/control_axis_parameters.cpp). The column (3 kg, breakout
+  // 10 N, friction 4 N) moves at about 1.2 m/s through the doublet's first frame at 150 N and
+  // trips at 200 N; the wheel (2 kg, 7 + 3 N) and the pedals (5 kg, 30 + 12 N) are scaled to
+  // the same speed. 150 N moves the column 0.09 of its travel in the first frame, 0.5 at the peak.
+  return axis == "roll" ? 90.0 : axis == "yaw" ? 250.0 : 150.0;
+}
+
 double step_time_s(const LatencyOptions& o, int k) { return o.first_step_s + k * o.interval_s; }
-double step_amplitude(const LatencyOptions& o, int k) { return k % 2 == 0 ? o.amplitude : -o.amplitude; }
+double step_amplitude(const LatencyOptions& o, int k) {
+  const double a = o.loader ? o.force_n : o.amplitude;
+  return k % 2 == 0 ? a : -a;
+}
+
+std::string axis_force_channel(const std::string& axis) {
+  return axis == "roll" ? "wheel_force_n" : axis == "yaw" ? "pedal_force_n" : "column_force_n";
+}
 
 void check_latency_options(const LatencyOptions& o) {
   auto finite_in = [](double v, double lo, double hi, const char* name) {
@@ -819,6 +1012,9 @@ void check_latency_options(const LatencyOptions& o) {
   if (o.steps < 1 || o.steps > 50) throw std::invalid_argument("--steps: 1..50");
   // The C172's trim elevator is about +0.21: +-0.75 keeps trim + pulse inside -1..1.
   finite_in(o.amplitude, -0.75, 0.75, "--amplitude");
+  // The loader trips to SAFE beyond 2 m/s of control speed (ControlAxisParameters::velocity_trip_mps):
+  // 300 N for 0.04 s would take the pitch column (3 kg) there; a trip is reported by name.
+  if (o.loader) finite_in(o.force_n, -300.0, 300.0, "--force");
   finite_in(o.pulse_s, 1.0 / o.rate_hz, 1.0, "--pulse");
   finite_in(o.first_step_s, 1.0, 600.0, "--first-step");
   finite_in(o.interval_s, 1.5, 600.0, "--interval");
@@ -831,8 +1027,10 @@ void check_latency_options(const LatencyOptions& o) {
 
 std::string latency_profile_csv(const LatencyOptions& o) {
   std::ostringstream csv;
-  const std::string control = axis_control(o.axis);
-  csv << "# fedsim latency: " << control << " doublets added to the trim (flight --controls relative)\n"
+  const std::string control = o.loader ? axis_force_channel(o.axis) : axis_control(o.axis);
+  csv << "# fedsim latency: " << control
+      << (o.loader ? " doublets [N] on the force sensor (fedsim-control-loading moves the control)\n"
+                   : " doublets added to the trim (flight --controls relative)\n")
       << "time_s, " << control << "\n0.0, 0.0\n";
   for (int k = 0; k < o.steps; ++k) {
     const double t = step_time_s(o, k), a = step_amplitude(o, k);
@@ -875,13 +1073,17 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   const bool lockstep = o.mode == "lockstep";
   // 0: a minute for start-up and stopping on top of the simulated time (lockstep is faster).
   const double timeout_s = o.timeout_s > 0.0 ? o.timeout_s : 60.0 + static_cast<double>(total_frames(o)) / o.rate_hz;
-  auto probe = std::make_unique<Probe>(o.dds, lockstep);
+  auto probe = std::make_unique<Probe>(o.dds, lockstep, o.loader);
+  const std::vector<std::string>& kPaths = paths_of(o);
+  // What is stepped: the control (normalised), or with --loader the force on it [N].
+  const std::string stepped = o.loader ? axis_force_channel(o.axis) : axis_control(o.axis);
+  const std::string step_size = o.loader ? fmt(o.force_n, 1) + " N" : fmt(o.amplitude, 2);
   const fs::path fedsim = fs::read_symlink("/proc/self/exe");
   const double steal_before = steal_s();
   const double load_before = load_average();
   const auto wall_start = std::chrono::steady_clock::now();
-  out << "fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 1) << " Hz, " << o.steps << ' ' << axis_control(o.axis)
-      << " doublet(s) of " << fmt(o.amplitude, 2) << ", " << fmt(o.pulse_s, 3) << " s each way, domain " << o.dds.domain_id << "; "
+  out << "fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 1) << " Hz, " << o.steps << ' ' << stepped
+      << " doublet(s) of " << step_size << (o.loader ? " (control loader in the loop)" : "") << ", " << fmt(o.pulse_s, 3) << " s each way, domain " << o.dds.domain_id << "; "
       << total_frames(o) << " frames; federation in " << (dir / "run").string() << '\n';
   util::ChildProcess run({fedsim.string(), "run", (dir / "latency.yaml").string(), "--domain",
                           std::to_string(o.dds.domain_id), "--out", (dir / "run").string(), "--quiet",
@@ -929,7 +1131,9 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
       ps.frames.push_back(p.frames);
       if (p.ms) ps.ms.push_back(*p.ms);
       if (p.in_frame_ms) ps.in_frame_ms.push_back(*p.in_frame_ms);
-      ps.where.push_back(where_frames_go(name, *s.step_frame, p, s.paths.at("flight_state")));
+      ps.where.push_back(o.loader ? where_frames_go(name, *s.step_frame, p, s.paths.at("flight_state"), &s.paths.at("loader"),
+                                                    s.io_primary_frames)
+                                  : where_frames_go(name, *s.step_frame, p, s.paths.at("flight_state")));
     }
   }
 
@@ -938,8 +1142,9 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   std::ostringstream md;
   // The pitch report reads as it did before the axes (issue 13); the others name their axis.
   md << "# fedsim latency: " << o.mode << " at " << fmt(o.rate_hz, 0) << " Hz"
-     << (o.axis == "pitch" ? std::string() : ", " + o.axis + " axis") << "\n\n"
-     << o.steps << ' ' << axis_control(o.axis) << " doublet(s) of " << fmt(o.amplitude, 2) << " (sign alternating), " << fmt(o.pulse_s, 3)
+     << (o.axis == "pitch" ? std::string() : ", " + o.axis + " axis") << (o.loader ? ", control loader in the loop" : "")
+     << "\n\n"
+     << o.steps << ' ' << stepped << " doublet(s) of " << step_size << " (sign alternating), " << fmt(o.pulse_s, 3)
      << " s each way, from " << fmt(o.first_step_s, 1) << " s every " << fmt(o.interval_s, 1) << " s; S is the frame the io "
      << "federate sampled the step in. ms: from the timing federate's publish of tick S to the arrival of the "
      << "first output showing the step" << (lockstep ? " (lockstep runs as fast as it can: the ms are not a "
@@ -954,6 +1159,10 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   j["rate_hz"] = o.rate_hz;
   j["steps"] = o.steps;
   j["amplitude"] = o.amplitude;
+  if (o.loader) {
+    j["loader"] = true;
+    j["force_n"] = o.force_n;
+  }
   j["wall_s"] = wall_s;
   j["steal_s"] = steal;
   j["load_average"] = {load_before, load_after};
@@ -1050,18 +1259,42 @@ void add_latency_command(CLI::App& app, int& exit_code) {
                   "the first half of a doublet; the sign alternates; 0: none, the negative control "
                   "(default: 0.7 pitch, 0.75 roll and yaw)")
       ->check(util::FiniteRange(-0.75, 0.75));
+  cmd->add_flag("--loader", options->loader,
+                "put fedsim-control-loading in the path: the step is a force doublet on the axis's force sensor "
+                "(column, wheel, pedals; fedsim-io --loader-in-the-loop), and the loader's control position is a path");
+  auto* force = cmd->add_option("--force", options->force_n,
+                                "with --loader: the force step [N], the first half of a doublet; the sign alternates; 0: "
+                                "none, the negative control (default: 150 pitch, 90 roll, 250 yaw)")
+                    ->check(util::FiniteRange(-300, 300));
   cmd->add_option("--pulse", options->pulse_s, "each half of the doublet [s]")->check(util::FiniteRange(0.005, 1.0))->capture_default_str();
   cmd->add_option("--first-step", options->first_step_s, "sim time of the first step [s]")
       ->check(util::FiniteRange(1.0, 600.0))
       ->capture_default_str();
-  cmd->add_option("--interval", options->interval_s, "between steps [s]")->check(util::FiniteRange(1.5, 600.0))->capture_default_str();
+  auto* interval = cmd->add_option("--interval", options->interval_s, "between steps [s] (with --loader: 6 by default)")
+                       ->check(util::FiniteRange(1.5, 600.0))
+                       ->capture_default_str();
   cmd->add_option("--timeout", options->timeout_s, "the whole run at most [s] (0: 60 s + the simulated time)")
       ->check(util::FiniteRange(0.0, 3600.0))
       ->capture_default_str();
   cmd->add_option("--out", options->out_dir, "output folder (latency.md, the deployment, the run's logs)")->capture_default_str();
   runtime::add_dds_options(*cmd, options->dds);
-  cmd->callback([options, amplitude, &exit_code] {
+  cmd->callback([options, amplitude, force, interval, &exit_code] {
     if (amplitude->count() == 0) options->amplitude = default_amplitude(options->axis);
+    if (force->count() != 0 && !options->loader) {
+      std::cerr << "fedsim latency: --force needs --loader (without it the step is --amplitude)\n";
+      exit_code = 2;
+      return;
+    }
+    if (amplitude->count() != 0 && options->loader) {
+      std::cerr << "fedsim latency: --amplitude is the control's step; with --loader the step is --force [N]\n";
+      exit_code = 2;
+      return;
+    }
+    if (force->count() == 0) options->force_n = default_force_n(options->axis);
+    // The loader's doublet leaves the control ringing (its second half does not cancel the first)
+    // and the aircraft pitching for seconds: 3 s later a picture's own trend can cross a pixel
+    // before the step's response arrives (docs/latency.md).
+    if (options->loader && interval->count() == 0) options->interval_s = kLoaderIntervalS;
     exit_code = run_latency(*options, std::cout, std::cerr);
   });
 }

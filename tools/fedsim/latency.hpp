@@ -14,6 +14,10 @@
 //   motion_platform fedsim/motion_state: a jack leaves its trend
 //   pfd_image       fedsim/visual_picture (channel 100): the PFD's horizon moves (pitch), tilts
 //                   (roll), or its heading scale turns (yaw)
+// --loader puts fedsim-control-loading in the path (Part 60 measures through the interface): the
+// step becomes a force doublet on the axis's force sensor (fedsim-io --loader-in-the-loop), and
+//   loader          fedsim/control_loading_state: the loader's position of the axis's control
+// is a path of its own; an output found to move before its cause could reach it is named.
 // A path's delay is counted in frames (the frame the output was produced in minus S) and, in
 // realtime, in milliseconds from the timing federate's publish of tick S (the instant the input
 // was sampled) to the output's arrival (for a picture: its visual_status, sent when the image is
@@ -49,6 +53,8 @@ struct LatencyOptions {
   int steps = 5;                  // doublets measured; the first edge of each is the step
   double amplitude = 0.7;         // the control's step, normalised, added to the trim (+ nose down, right wing down,
                                   // nose right); 0: none. The command line's default is the axis's (default_amplitude)
+  bool loader = false;            // --loader: fedsim-control-loading in the path; the step is a force doublet
+  double force_n = 150.0;         // --loader: the force step on the axis's control [N]; 0: none
   double pulse_s = 0.04;          // each half of the doublet [s]
   double first_step_s = 9.0;      // sim time of the first step (the platform engages in ~5.2 s, then settles) [s]
   double interval_s = 3.0;        // between steps [s]
@@ -62,12 +68,17 @@ double default_amplitude(const std::string& axis);
 /// The profile column the axis steps: elevator, aileron or rudder.
 std::string axis_control(const std::string& axis);
 
+/// The force step `fedsim latency --loader --axis AXIS` takes when --force is not given [N].
+double default_force_n(const std::string& axis);
+/// --loader: the profile's force channel the axis steps: column_force_n, wheel_force_n or pedal_force_n.
+std::string axis_force_channel(const std::string& axis);
+
 /// Throws std::invalid_argument naming the option that is out of range or not finite.
 void check_latency_options(const LatencyOptions& options);
 
 /// The profile fedsim-io flies: time_s, the axis's control (relative to the trim), one doublet per step.
 std::string latency_profile_csv(const LatencyOptions& options);
-/// Sim time of step k (0-based) and its signed amplitude.
+/// Sim time of step k (0-based) and its signed amplitude (--loader: the force [N]).
 double step_time_s(const LatencyOptions& options, int k);
 double step_amplitude(const LatencyOptions& options, int k);
 
