@@ -11,6 +11,7 @@
 // written); 3 the trim did not converge (its JSON and the reason are printed, nothing written);
 // 1 a failure while running or faults counted (the output folder is kept for inspection).
 #include "common/runtime/composition.hpp"
+#include "common/units/units.hpp"
 #include "flight/fly/fly_options.hpp"
 #include "io/io_component.hpp"
 #include "io/model/input_profile.hpp"
@@ -50,7 +51,7 @@ Prepared prepare(FlyOptions& o) {
 void report_the_stall(const io::StallEntryPilot& pilot) {
   if (pilot.phase() == io::StallEntryPhase::kStalled) {
     std::fprintf(stderr, "fedsim-fly: stall entry: stall identified at %.2f s, %.1f KCAS (%s); recovery flown\n",
-                 pilot.stall_time_s(), pilot.stall_cas_mps() * 3600.0 / 1852.0, pilot.stall_indication().c_str());
+                 pilot.stall_time_s(), pilot.stall_cas_mps() * units::kMpsToKt, pilot.stall_indication().c_str());
   } else {
     std::fprintf(stderr, "fedsim-fly: stall entry: no stall identified by the end of the run (phase %s)\n",
                  io::to_string(pilot.phase()));

@@ -1,5 +1,6 @@
 #include "io/model/stall_entry_pilot.hpp"
 
+#include "common/units/units.hpp"
 #include "io/model/control_inputs.hpp"
 
 #include <algorithm>
@@ -9,8 +10,8 @@
 
 namespace fedsim::io {
 namespace {
-constexpr double kMpsToKt = 3600.0 / 1852.0;
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+using units::kMpsToKt;
+using units::kRadToDeg;
 constexpr double kAftStop = -1.0 + 1e-9;
 
 void require(double value, double lo, double hi, const char* name) {
