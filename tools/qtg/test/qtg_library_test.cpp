@@ -59,6 +59,13 @@ std::string replace(std::string s, const std::string& from, const std::string& t
   return s.replace(at, from.size(), to);
 }
 
+/// Whether the argument list has option `key` followed by `value`.
+bool has_option(const std::vector<std::string>& a, const std::string& key, const std::string& value) {
+  for (std::size_t i = 0; i + 1 < a.size(); ++i)
+    if (a[i] == key && a[i + 1] == value) return true;
+  return false;
+}
+
 /// The error load_test gives, or "" if it loaded.
 std::string load_error(const std::string& text) {
   try {
@@ -136,11 +143,7 @@ TEST(QtgTestFile, MissingProfileIsNamed) {
 TEST(QtgTestFile, FlyArgumentsMapTheStart) {
   const QtgTest t = load_test(write("c172_phugoid.yaml", kValid));
   const auto a = fly_arguments(t, "/tmp/x");
-  const auto has = [&](const std::string& k, const std::string& v) {
-    for (std::size_t i = 0; i + 1 < a.size(); ++i)
-      if (a[i] == k && a[i + 1] == v) return true;
-    return false;
-  };
+  const auto has = [&](const std::string& k, const std::string& v) { return has_option(a, k, v); };
   EXPECT_TRUE(has("--aircraft", "c172"));
   EXPECT_TRUE(has("--trim", "level"));
   EXPECT_TRUE(has("--ktas", "100"));
@@ -251,11 +254,7 @@ TEST(QtgTestFile, TheStallEntryPilotAndTheStallMeasure) {
   EXPECT_FALSE(t.inputs_relative);
   EXPECT_TRUE(t.start.gear_down);
   const auto a = fly_arguments(t, "/tmp/x");
-  const auto has = [&](const std::string& k, const std::string& v) {
-    for (std::size_t i = 0; i + 1 < a.size(); ++i)
-      if (a[i] == k && a[i + 1] == v) return true;
-    return false;
-  };
+  const auto has = [&](const std::string& k, const std::string& v) { return has_option(a, k, v); };
   EXPECT_TRUE(has("--pilot", "stall-entry"));
   const auto number_after = [&](const std::string& k) {
     const auto at = std::find(a.begin(), a.end(), k);
