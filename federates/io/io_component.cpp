@@ -129,6 +129,13 @@ void IoComponent::show_the_pilot_the_aircraft() {
   seen.q_radps = s->omega_body_radps()[1];
   seen.elevator = s->controls().elevator();
   seen.elevator_trim = s->controls().pitch_trim();
+  for (double v : {seen.sim_time_s, seen.cas_mps, seen.phi_rad, seen.theta_rad, seen.p_radps, seen.q_radps,
+                   seen.elevator, seen.elevator_trim}) {
+    if (!std::isfinite(v)) {
+      report_fault("input_rejected", "aircraft_state not finite: the test pilot holds the controls");
+      return;
+    }
+  }
   source_->observe(seen);
 }
 
