@@ -33,10 +33,8 @@ function(fedsim_model_library target folder)
   file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${folder}/test/*_test.cpp)
   if(tests AND TARGET GTest::gtest_main)
     add_executable(${target}_tests ${tests})
-    target_link_libraries(${target}_tests PRIVATE ${target} fedsim_allocation_counter
+    target_link_libraries(${target}_tests PRIVATE ${target} fedsim_util fedsim_allocation_counter
                           GTest::gtest_main)
-    target_compile_definitions(${target}_tests PRIVATE
-      FEDSIM_TEST_DATA_DIR="${CMAKE_SOURCE_DIR}/tests/data")
     gtest_discover_tests(${target}_tests DISCOVERY_TIMEOUT 60)
   endif()
 endfunction()

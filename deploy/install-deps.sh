@@ -6,6 +6,8 @@ set -euo pipefail
 PACKAGES=(
   # toolchain
   build-essential cmake ninja-build pkg-config git
+  # a compiler cache: a fresh clone compiles from an earlier build's objects (CMakeLists.txt)
+  ccache
   # middleware: Fast DDS 2.9 + Fast CDR + IDL compiler (fastddsgen needs a JRE)
   libfastrtps-dev libfastcdr-dev libfoonathan-memory-dev fastddsgen fastdds-tools default-jre-headless
   # maths, geodesy, config, logging, CLI

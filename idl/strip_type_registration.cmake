@@ -8,6 +8,7 @@
 # (tools/topic: register_all_idl_types), and the runtime does not announce TypeObjects, so the
 # call is removed from the constructors. A file with no such call is an error: fastddsgen's
 # output changed and this script must be looked at again.
+# It also drops the run-dependent object hashes fastddsgen leaves in comments (see below).
 foreach(file IN LISTS FILES)
   file(READ ${file} text)
   string(REGEX MATCHALL "\n[ \t]*// Just to register all known types\n[ \t]*register[A-Za-z0-9_]*Types\\(\\);" calls "${text}")
@@ -16,5 +17,8 @@ foreach(file IN LISTS FILES)
     message(FATAL_ERROR "${file}: no per-constructor type registration found (fastddsgen output changed?)")
   endif()
   string(REGEX REPLACE "\n[ \t]*// Just to register all known types\n[ \t]*register[A-Za-z0-9_]*Types\\(\\);" "" text "${text}")
+  # The Java object hashes fastddsgen writes into comments ("EnumTypeCode@1dde4cb2") change
+  # every run: without them the generated source is the same every time, and ccache serves it.
+  string(REGEX REPLACE "(com\\.eprosima[A-Za-z.]*)@[0-9a-f]+" "\\1" text "${text}")
   file(WRITE ${file} "${text}")
 endforeach()

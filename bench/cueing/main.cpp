@@ -7,6 +7,7 @@
 // (benchmarking.md: absolute times here say more about the neighbours than about the code).
 // Each figure is the best of several repeats. The last line is one JSON object.
 #include <CLI/CLI.hpp>
+#include "common/util/build_paths.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -87,7 +88,7 @@ LoaderFigures loader_step_us(double dt, int repeats, int calls) {
 double flight_step_us(double dt, int repeats, int calls) {
   flight::AircraftModel::Options options;
   options.integrator = IntegrationMethod::kRk4;
-  flight::AircraftModel model(flight::load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml"), options);
+  flight::AircraftModel model(flight::load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/c172.yaml"), options);
   flight::TrimRequest r;
   r.kind = flight::TrimKind::kLevel;
   r.position = {28.0 * units::kDegToRad, -90.0 * units::kDegToRad, 4000.0 * units::kFtToM};

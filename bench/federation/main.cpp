@@ -11,6 +11,7 @@
 //   - CPU steal during each phase (/proc/stat), which explains most of the tails here.
 // The last line of output is one JSON object with every figure.
 #include "common/util/child_process.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/latency_stats.hpp"
 #include "common/util/monotonic_clock.hpp"
@@ -41,7 +42,7 @@ struct Options {
   double realtime_s = 60.0;
   int first_domain = 200;
   std::string seedproto;
-  std::string qos_file = FEDSIM_QOS_FILE;
+  std::string qos_file = fedsim::util::qos_file();
   std::string profile = "fedsim_loopback";
   std::string sync_qos = "best_effort";
   bool skip_realtime = false;

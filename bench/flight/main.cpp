@@ -8,6 +8,7 @@
 // CPU at random; the best is the model's own speed). The last line is one JSON object with
 // every figure. Target: the C172 at >= 250,000 steps/s with a single-evaluation integrator.
 #include <CLI/CLI.hpp>
+#include "common/util/build_paths.hpp"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -54,8 +55,8 @@ std::vector<Aircraft> aircraft() {
   b737.position.alt_m = 30000.0 * units::kFtToM;
   b737.airspeed_mps = 440.0 * units::kKtToMps;
   b737.controls.gear_down = false;
-  return {{"c172", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", c172},
-          {"b737", std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml", b737}};
+  return {{"c172", fedsim::util::data_dir() + "/aircraft/c172.yaml", c172},
+          {"b737", fedsim::util::data_dir() + "/aircraft/b737.yaml", b737}};
 }
 
 struct Figure {

@@ -1,4 +1,5 @@
 #include "common/airports/runway_table.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/csv/csv_reader.hpp"
 #include "common/units/units.hpp"
@@ -37,7 +38,7 @@ RunwayTable RunwayTable::load_file(const std::string& path) {
 }
 
 RunwayTable RunwayTable::load_default() {
-  return load_file(std::string(FEDSIM_DATA_DIR) + "/nav/runways.csv");
+  return load_file(fedsim::util::data_dir() + "/nav/runways.csv");
 }
 
 std::optional<RunwayEnd> RunwayTable::find(const std::string& airport,

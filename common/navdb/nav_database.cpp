@@ -1,4 +1,5 @@
 #include "common/navdb/nav_database.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/navdb/nav_schema.hpp"
 #include "common/navdb/nav_types.hpp"
@@ -13,9 +14,6 @@
 #include <filesystem>
 #include <stdexcept>
 
-#ifndef FEDSIM_NAVDB_FILE
-#error "FEDSIM_NAVDB_FILE (the built database's path) must be defined by the build"
-#endif
 
 namespace fedsim::nav {
 
@@ -206,7 +204,7 @@ SqliteConnection open_checked(const std::string& path) {
 std::string default_database_path() {
   const char* from_environment = std::getenv("FEDSIM_NAVDB");
   if (from_environment && *from_environment) return from_environment;
-  return FEDSIM_NAVDB_FILE;
+  return util::navdb_file();
 }
 
 struct NavDatabase::Impl {

@@ -27,7 +27,7 @@ struct NavaidHit {
   double bearing_true_rad = 0.0;  // true azimuth of the station from the query point [rad]
 };
 
-/// The database the build made (FEDSIM_NAVDB_FILE, <build>/data/nav.sqlite), or the file the
+/// The database the build made (util::navdb_file(), <build>/data/nav.sqlite), or the file the
 /// environment variable FEDSIM_NAVDB names when it is set.
 std::string default_database_path();
 

@@ -1,4 +1,5 @@
 #include "common/runtime/federate_options.hpp"
+#include "common/util/build_paths.hpp"
 
 #include <cstdlib>
 #include <iostream>
@@ -13,7 +14,7 @@ namespace fedsim::runtime {
 
 std::string default_qos_file() {
   if (const char* env = std::getenv("FEDSIM_QOS_FILE"); env && *env) return env;
-  return FEDSIM_QOS_FILE;
+  return util::qos_file();
 }
 
 void add_dds_options(CLI::App& app, ParticipantOptions& options) {

@@ -1,4 +1,5 @@
 #include "ios/ios_station.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/instructor/request_json.hpp"
 #include "common/navdb/nav_database.hpp"
@@ -196,7 +197,7 @@ class Station {
       : options_(options),
         db_(nav::NavDatabase::open(options.navdb_file.empty() ? nav::default_database_path() : options.navdb_file)),
         server_(options.server),
-        scenario_(options.scenarios.empty() ? std::filesystem::path(FEDSIM_DATA_DIR) / "scenarios"
+        scenario_(options.scenarios.empty() ? std::filesystem::path(fedsim::util::data_dir()) / "scenarios"
                                             : std::filesystem::path(options.scenarios)) {
     register_routes();
     server_.set_greeting([this] { return current_state(); });

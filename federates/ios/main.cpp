@@ -1,5 +1,6 @@
 // fedsim-ios: the instructor station. See ios_station.hpp.
 #include "ios/ios_station.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/runtime/federate_main.hpp"
 #include "common/util/cli_checks.hpp"
@@ -33,7 +34,7 @@ std::string read_token(const std::string& token_file) {
 int main(int argc, char** argv) {
   using namespace fedsim;
   ios::StationOptions o;
-  o.server.web_root = FEDSIM_IOS_WEB_ROOT;
+  o.server.web_root = fedsim::util::source_dir() + "/federates/ios/web";
   std::string token_file;
   CLI::App app{"fedsim-ios: the instructor station: a web page (map, plots, instruments, channel "
                "pictures, federation, commands) served on 127.0.0.1"};

@@ -1,4 +1,5 @@
 #include "visual/visual_component.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/frame_clock/rate_slot.hpp"
 #include "common/navdb/nav_database.hpp"
@@ -356,7 +357,7 @@ void VisualComponent::on_stop() {
 namespace {
 
 struct Options {
-  std::string channels = std::string(FEDSIM_DATA_DIR) + "/visual/channels.yaml";
+  std::string channels = fedsim::util::data_dir() + "/visual/channels.yaml";
   std::string channel = "centre";
   int channel_id = -1;
   std::string aircraft;

@@ -3,6 +3,7 @@
 // brackets in the comment agrees with the suffix; no field uses the retired _rps (rad/s) or a
 // _b frame token. Parses idl/*.idl as the repository has them.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -40,7 +41,7 @@ std::vector<Field> floating_fields() {
   const std::regex field(R"(^\s*(double|float)\s+(\w+)(\[\d+\])?;\s*//(.*)$)");
   const std::regex uncommented(R"(^\s*(double|float)\s+(\w+)(\[\d+\])?;\s*$)");
   std::vector<Field> out;
-  for (const auto& entry : fs::directory_iterator(std::string(FEDSIM_SOURCE_DIR) + "/idl")) {
+  for (const auto& entry : fs::directory_iterator(fedsim::util::source_dir() + "/idl")) {
     if (entry.path().extension() != ".idl") continue;
     std::ifstream in(entry.path());
     int n = 0;

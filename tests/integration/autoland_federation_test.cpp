@@ -3,6 +3,7 @@
 // in-process. Its own executable: a 20,000-frame federation is run serially, with a longer
 // timeout than the other integration tests.
 #include "common/util/child_process.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/runtime/topic_types.hpp"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,7 @@ using util::ChildProcess;
 using util::read_file;
 using util::temp_dir;
 
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+std::string bin(const std::string& name) { return fedsim::util::bin_dir() + "/" + name; }
 
 /// The value of `column` in the last row of a recorded CSV (fedsim record's header names).
 double last_value(const std::string& csv, const std::string& column) {
@@ -51,7 +52,7 @@ double last_value(const std::string& csv, const std::string& column) {
 // the same recording (and the same pictures at the decision height) byte for byte.
 TEST(Federation, IlsAutolandDeploymentLandsAndMatchesTheInProcessRun) {
   const std::string dir = temp_dir("ils_autoland");
-  const std::string yaml = std::string(FEDSIM_SOURCE_DIR) + "/deploy/ils-autoland.yaml";
+  const std::string yaml = fedsim::util::source_dir() + "/deploy/ils-autoland.yaml";
   std::map<std::string, std::string> progress;  // fedsim run's output per run
   auto fly = [&](const std::string& name, std::vector<std::string> extra) {
     const std::string out = dir + "/" + name;

@@ -2,6 +2,7 @@
 // a killed federate, scripted I/O, the launcher, and network confinement. Each test uses its
 // own DDS domain so that ctest -j runs do not see each other.
 #include "common/util/child_process.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
@@ -33,7 +34,7 @@ using util::ChildProcess;
 using util::read_file;
 using util::temp_dir;
 
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+std::string bin(const std::string& name) { return fedsim::util::bin_dir() + "/" + name; }
 
 struct TraceRow {
   std::uint64_t frame, sim_frame;
@@ -390,7 +391,7 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   const int domain = 138;
   const std::string dir = temp_dir("flight");
   auto flight = start(dir, "flight", domain, "fedsim-flight",
-                      {"--aircraft", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", "--trim",
+                      {"--aircraft", fedsim::util::data_dir() + "/aircraft/c172.yaml", "--trim",
                        "level", "--alt-ft", "4000", "--ktas", "100", "--heading", "90", "--lat",
                        "37.6", "--lon", "-122.3"});
   auto timing = start(dir, "timing", domain, "fedsim-timing",
@@ -678,7 +679,7 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
       });
   auto io = start(dir, "io", domain, "fedsim-io", {"--profile", dir + "/profile.csv"});
   auto flight = start(dir, "flight", domain, "fedsim-flight",
-                      {"--aircraft", std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", "--trim", "level",
+                      {"--aircraft", fedsim::util::data_dir() + "/aircraft/c172.yaml", "--trim", "level",
                        "--alt-ft", "3000", "--ktas", "100"});
   auto cl = start(dir, "control_loading", domain, "fedsim-control-loading", {});
   auto mo = start(dir, "motion", domain, "fedsim-motion", {});
@@ -781,7 +782,7 @@ TEST(Federation, AVisualChannelDrawsTheApproachAndSnapshotsOnCommand) {
         seen.picture_width = m.width_px();
         ++seen.pictures;
       });
-  const std::string b737 = std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml";
+  const std::string b737 = fedsim::util::data_dir() + "/aircraft/b737.yaml";
   auto io = start(dir, "io", domain, "fedsim-io", {"--profile", dir + "/profile.csv"});
   auto flight = start(dir, "flight", domain, "fedsim-flight",
                       {"--aircraft", b737, "--airport", "KSFO", "--runway", "28R", "--approach-nm", "3",

@@ -1,5 +1,6 @@
 // NASA atmospheric check cases through fedsim-fly.
 #include "fly_check_case.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <cmath>
@@ -62,12 +63,12 @@ TimeHistory nasa_channels_from_fly_csv(const std::string& csv_path) {
 
 TimeHistory fly_case(const FlyCheckCase& c, const std::string& work_dir) {
   const std::string out_dir = work_dir + "/" + c.id;
-  const std::string ic = std::string(FEDSIM_TEST_DATA_DIR) + "/nasa/" + c.id + "/ic.yaml";
+  const std::string ic = fedsim::util::test_data_dir() + "/nasa/" + c.id + "/ic.yaml";
   // RK4 at 100 Hz as the direct rigid-body runs; the answers are converged in the step.
   // NASA defines the brick's damping with body rates relative to inertial space (SOURCE.md);
   // fedsim's default, rates relative to the air mass turning with the earth, differs by the
   // earth's rate (7.3e-5 rad/s), which case 3 would show 7000 times over its 1e-8 rad/s margin.
-  util::ChildProcess fly({FEDSIM_FLY_BINARY, "--aircraft", c.pack, "--ic", ic, "--earth", "wgs84",
+  util::ChildProcess fly({(fedsim::util::bin_dir() + "/fedsim-fly"), "--aircraft", c.pack, "--ic", ic, "--earth", "wgs84",
                           "--aero-rates", "inertial", "--integrator", "rk4", "--rate", "100",
                           "--duration", std::to_string(kDurationS), "--out", out_dir, "--quiet"},
                          work_dir + "/" + c.id + ".log");

@@ -4,6 +4,7 @@
 // library alone; both compared with the envelope of NASA's simulation tools. Also tests of the
 // reference loader and the comparator themselves.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <cmath>
@@ -22,7 +23,7 @@
 namespace fedsim::flight::nasa {
 namespace {
 
-const std::string kDataDir = std::string(FEDSIM_TEST_DATA_DIR) + "/nasa/";
+const std::string kDataDir = fedsim::util::test_data_dir() + "/nasa/";
 constexpr double kFt = units::kFtToM;
 constexpr double kDeg = units::kDegToRad;
 
@@ -97,7 +98,7 @@ TEST_P(NasaCheckCasesThroughFedsimFly, StaysWithinTheNasaEnvelope) {
   const TimeHistory fedsim = fly_case(check_case, work_dir);
   expect_inside_envelope(check_case.id, fedsim, reference);
   if (!plot_comparison(check_case.id, check_case.title, fedsim, reference,
-                       FEDSIM_NASA_PLOT_DIR)) {
+                       fedsim::util::binary_dir() + "/nasa")) {
     std::printf("%s: gnuplot unavailable or failed; no PNG drawn\n", check_case.id.c_str());
   }
 }

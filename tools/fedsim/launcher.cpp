@@ -1,4 +1,5 @@
 #include "fedsim/launcher.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/runtime/dds_participant.hpp"
 #include "common/runtime/federate_options.hpp"
@@ -719,8 +720,8 @@ Deployment load_with_scenario(const RunOptions& options) {
 
 std::map<std::string, std::string> deployment_vars(const std::string& deployment_path,
                                                    const std::string& out_dir) {
-  return {{"SOURCE_DIR", FEDSIM_SOURCE_DIR},
-          {"DATA_DIR", FEDSIM_DATA_DIR},
+  return {{"SOURCE_DIR", util::source_dir()},
+          {"DATA_DIR", util::data_dir()},
           {"DEPLOY_DIR", fs::absolute(deployment_path).parent_path().string()},
           {"OUT_DIR", fs::absolute(out_dir).string()},
           {"BIN_DIR", self_dir()}};

@@ -1,4 +1,5 @@
 #include "fedsim/soak.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/runtime/shutdown.hpp"
 #include "common/util/child_process.hpp"
@@ -318,7 +319,7 @@ int run_soak(const SoakOptions& options, std::ostream& out, std::ostream& err) {
     return 2;
   }
   const std::string deployment = options.deployment.empty()
-                                     ? std::string(FEDSIM_SOURCE_DIR) + "/deploy/soak.yaml"
+                                     ? fedsim::util::source_dir() + "/deploy/soak.yaml"
                                      : options.deployment;
   if (!fs::is_regular_file(deployment)) {
     err << "fedsim soak: deployment '" << deployment << "' not found\n";

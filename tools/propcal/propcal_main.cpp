@@ -5,6 +5,7 @@
 // "Calibration"). Prints the factors and the runs they give; the factors go into the pack's
 // calibration overlay (data/aircraft/<pack>.calibration.yaml).
 #include <CLI/CLI.hpp>
+#include "common/util/build_paths.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -24,7 +25,7 @@ using namespace fedsim::flight;
 
 std::string pack_path(const std::string& aircraft) {
   if (aircraft.find('/') != std::string::npos || aircraft.ends_with(".yaml")) return aircraft;
-  return std::string(FEDSIM_DATA_DIR) + "/aircraft/" + aircraft + ".yaml";
+  return fedsim::util::data_dir() + "/aircraft/" + aircraft + ".yaml";
 }
 
 void print_runs(const char* what, const StaticRunUp& s, const TakeoffRoll& r) {

@@ -5,6 +5,7 @@
 // --recording DIR the named tests are evaluated on a `fedsim run`'s recording instead of flown.
 // Usage and format: docs/qtg.md, data/qtg/README.md.
 #include <unistd.h>
+#include "common/util/build_paths.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -82,7 +83,7 @@ bool print_pdf(const std::string& chromium, const std::string& html, const std::
 int main(int argc, char** argv) {
   CLI::App app{"fedsim-qtg: fly the Qualification Test Guide and write its report"};
   std::string out_dir = "out/qtg";
-  std::string tests_dir = std::string(FEDSIM_SOURCE_DIR) + "/data/qtg";
+  std::string tests_dir = fedsim::util::source_dir() + "/data/qtg";
   std::vector<std::string> only;
   std::string fly = own_folder() + "/fedsim-fly";
   std::string fedsim = own_folder() + "/fedsim";
@@ -128,9 +129,9 @@ int main(int argc, char** argv) {
   try {
     // profiles, then deployments and scenarios named from the source tree (deploy/..., data/...)
     const std::vector<std::string> search = {tests_dir + "/profiles",
-                                             std::string(FEDSIM_SOURCE_DIR) + "/data/qtg/profiles",
-                                             std::string(FEDSIM_SOURCE_DIR) + "/data/profiles",
-                                             std::string(FEDSIM_SOURCE_DIR)};
+                                             fedsim::util::source_dir() + "/data/qtg/profiles",
+                                             fedsim::util::source_dir() + "/data/profiles",
+                                             fedsim::util::source_dir()};
     for (const auto& path : find_tests(tests_dir)) {
       const std::string stem = fs::path(path).stem().string();
       if (!only.empty() && std::find(only.begin(), only.end(), stem) == only.end()) continue;

@@ -3,6 +3,7 @@
 // near the antimeridian and both poles); distances and bearings against GeographicLib and
 // published figures; nearest-on-frequency against a brute-force scan.
 #include "common/navdb/nav_database.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/navdb/nav_schema.hpp"
 #include "common/units/units.hpp"
 #include "navdb_test_support.hpp"
@@ -114,7 +115,7 @@ TEST(NavDatabaseOpen, DefaultPathIsTheBuiltDatabaseUnlessTheEnvironmentNamesOne)
   const char* saved = std::getenv("FEDSIM_NAVDB");
   const std::string saved_value = saved ? saved : "";
   unsetenv("FEDSIM_NAVDB");
-  EXPECT_EQ(default_database_path(), FEDSIM_NAVDB_FILE_FOR_TESTS);
+  EXPECT_EQ(default_database_path(), fedsim::util::navdb_file());
   setenv("FEDSIM_NAVDB", "/somewhere/else.sqlite", 1);
   EXPECT_EQ(default_database_path(), "/somewhere/else.sqlite");
   if (saved) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/navdb/nav_database_builder.hpp"
+#include "common/util/build_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,7 @@
 namespace fedsim::nav::test {
 
 inline std::string fixture(const std::string& name) {
-  return std::string(FEDSIM_SOURCE_DIR) + "/common/navdb/test/data/" + name;
+  return fedsim::util::source_dir() + "/common/navdb/test/data/" + name;
 }
 
 /// A file in the test temporary folder, private to this process: ctest runs each test of a

@@ -1,6 +1,7 @@
-// The database the build makes from the shipped OurAirports files (FEDSIM_NAVDB_FILE): real
+// The database the build makes from the shipped OurAirports files (util::navdb_file()): real
 // stations and runways against published facts (FAA Chart Supplement, airport diagram).
 #include "common/navdb/nav_database.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/navdb/nav_types.hpp"
 #include "common/units/units.hpp"
 
@@ -21,7 +22,7 @@ constexpr double kKsfoLatDeg = 37.0 + 37.0 / 60.0 + 8.3 / 3600.0;
 constexpr double kKsfoLonDeg = -(122.0 + 22.0 / 60.0 + 29.6 / 3600.0);
 
 const NavDatabase& shipped() {
-  static const NavDatabase db = NavDatabase::open(FEDSIM_NAVDB_FILE_FOR_TESTS);
+  static const NavDatabase db = NavDatabase::open(fedsim::util::navdb_file());
   return db;
 }
 

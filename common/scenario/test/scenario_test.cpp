@@ -1,5 +1,6 @@
 // Scenario files: parsed with file:line errors, run frame by frame against a fake field lookup.
 #include "common/scenario/scenario.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/units/units.hpp"
 
@@ -396,7 +397,7 @@ TEST(ScenarioErrors, FileAndStructureErrors) {
 // ---- The example scenarios in data/scenarios ----
 
 TEST(ScenarioFiles, EveryExampleLoads) {
-  const std::filesystem::path dir = FEDSIM_SOURCE_DIR "/data/scenarios";
+  const std::filesystem::path dir = fedsim::util::source_dir() + "/data/scenarios";
   int loaded = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".yaml") continue;
@@ -410,7 +411,7 @@ TEST(ScenarioFiles, EveryExampleLoads) {
 }
 
 TEST(ScenarioFiles, EngineFailureApproachRunsAsDescribed) {
-  auto s = Scenario::load_file(FEDSIM_SOURCE_DIR "/data/scenarios/engine_failure_approach.yaml");
+  auto s = Scenario::load_file(fedsim::util::source_dir() + "/data/scenarios/engine_failure_approach.yaml");
   for (const auto& field : s.fields()) EXPECT_EQ(field.rfind(kState + ".", 0), 0u) << field;
   FakeFields f;
   f.values[kState + ".height_agl_m"] = 900.0;

@@ -3,6 +3,7 @@
 // dynamic pressure (the gradient's schedule); the autopilot back-drives the column; a NaN
 // sample and the instructor cut it off to SAFE within the frame, reported by name.
 #include "control_loading/control_loading_component.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/runtime/composition.hpp"
 
@@ -216,7 +217,7 @@ TEST_F(ControlLoadingComponentTest, ABurstOfLateTicksCutsItOff) {
 TEST(ShakerSchedule, ThePacksStallWarningAnglesScheduleTheShakerOnTheFlaps) {
   ControlLoadingSetup setup;
   EXPECT_TRUE(std::isnan(scheduled_shaker_alpha_rad(setup, 0.5)));  // no --aircraft
-  schedule_shaker_from_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml", setup);
+  schedule_shaker_from_pack(fedsim::util::data_dir() + "/aircraft/c172.yaml", setup);
   ASSERT_EQ(setup.shaker_alpha_rad.size(), 5u);
   for (double a : setup.shaker_alpha_rad) {
     EXPECT_GT(a, 0.1);

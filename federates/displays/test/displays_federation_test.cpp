@@ -4,6 +4,7 @@
 // drawn, and the last pictures are written as PNGs on stop. The control: a picture of another
 // channel id than the two displays' never arrives (only displays are in this federation).
 #include "common/runtime/federate_options.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/util/child_process.hpp"
@@ -18,7 +19,7 @@
 namespace fedsim::displays {
 namespace {
 
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+std::string bin(const std::string& name) { return fedsim::util::bin_dir() + "/" + name; }
 
 std::unique_ptr<util::ChildProcess> start(const std::string& dir, const std::string& name, int domain,
                                           const std::string& binary, std::vector<std::string> args) {
@@ -53,7 +54,7 @@ TEST(DisplaysFederation, PublishesDecodablePicturesAndWritesTheFinalPngs) {
         std::lock_guard lock(seen.mutex);
         seen.frames[m.channel_id()] = m.frames_rendered();
       });
-  const std::string b737 = std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml";
+  const std::string b737 = fedsim::util::data_dir() + "/aircraft/b737.yaml";
   auto flight = start(dir, "flight", domain, "fedsim-flight",
                       {"--aircraft", b737, "--airport", "KSFO", "--runway", "28R", "--approach-nm", "3", "--alt-ft",
                        "1000", "--kcas", "145", "--flaps", "0.875", "--gear-down", "--state-qos", "lockstep_data"});

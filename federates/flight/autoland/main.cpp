@@ -7,6 +7,7 @@
 // and prints the worst case of each figure. Exit status 0 when every landing is within the
 // limits, 2 when some are not (the files are written either way), 1 on bad options.
 #include "flight/autoland/monte_carlo/autoland_monte_carlo.hpp"
+#include "common/util/build_paths.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 
 #include <CLI/CLI.hpp>
@@ -68,7 +69,7 @@ int run(const Options& o) {
       afcs::with_course_through_threshold(afcs::load_default_ils_approach(o.airport, o.runway));
   const RunwayCentreline runway =
       RunwayCentreline::from_table(RunwayTable::load_default(), o.airport, o.runway);
-  const AircraftPack pack = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
+  const AircraftPack pack = load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/b737.yaml");
   autoland::ScenarioRanges ranges;
   ranges.validate();
   std::mt19937_64 rng(o.seed);

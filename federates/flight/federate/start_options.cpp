@@ -1,4 +1,5 @@
 #include "flight/federate/start_options.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 std::string resolve_pack_path(const std::string& aircraft) {
   namespace fs = std::filesystem;
   if (fs::is_regular_file(aircraft)) return aircraft;
-  const fs::path folder = fs::path(FEDSIM_DATA_DIR) / "aircraft";
+  const fs::path folder = fs::path(fedsim::util::data_dir()) / "aircraft";
   for (const fs::path& candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
     if (fs::is_regular_file(candidate)) return candidate.string();
   }

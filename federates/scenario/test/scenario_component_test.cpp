@@ -2,6 +2,7 @@
 // read the fields of the state it names, its commands reach the other federates, and `stop` ends
 // the run. Every check has a control that would show a false pass.
 #include "scenario/scenario_component.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/runtime/composition.hpp"
 
@@ -94,7 +95,7 @@ events:
 
 TEST(ScenarioComponent, EveryShippedScenarioBuildsItsPorts) {
   for (const char* file : {"engine_failure_approach.yaml", "freeze_and_reposition.yaml"}) {
-    ScenarioComponent component("scenario", Scenario::load_file(std::string(FEDSIM_TEST_DATA_DIR) + "/scenarios/" + file));
+    ScenarioComponent component("scenario", Scenario::load_file(fedsim::util::data_dir() + "/scenarios/" + file));
     EXPECT_FALSE(component.ports().empty()) << file;
   }
 }

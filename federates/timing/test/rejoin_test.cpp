@@ -7,6 +7,7 @@
 // (--ack-timeout of its first unacknowledged tick; before the fix: never), and rejoined after
 // SIGCONT. Each test has its own DDS domain (211-215); about 50 s in all, each under 13 s.
 #include "common/runtime/dds_participant.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
@@ -31,7 +32,7 @@ namespace {
 using util::ChildProcess;
 using util::read_file;
 
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+std::string bin(const std::string& name) { return fedsim::util::bin_dir() + "/" + name; }
 
 /// Everything said on fedsim/federate_status: each federate's latest status, and every message.
 class StatusWatch {

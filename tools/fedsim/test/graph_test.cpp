@@ -1,6 +1,7 @@
 // fedsim graph: the shipped deployments have a complete, matching data flow; a reader without a
 // writer and a QoS mismatch are reported by name (the checks can fail).
 #include "fedsim/graph.hpp"
+#include "common/util/build_paths.hpp"
 #include "fedsim/launcher.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
 
 DataFlowGraph graph_of_text(const std::string& yaml) {
   const Deployment d = parse_deployment(yaml, "test.yaml");
-  return build_graph(d, deployment_vars(std::string(FEDSIM_SOURCE_DIR) + "/deploy/test.yaml",
+  return build_graph(d, deployment_vars(fedsim::util::source_dir() + "/deploy/test.yaml",
                                         testing::TempDir() + "graph_out"));
 }
 
@@ -32,7 +33,7 @@ bool mentions(const std::vector<std::string>& lines, const std::string& text) {
 
 TEST(Graph, ShippedDeploymentsHaveNoProblems) {
   int checked = 0;
-  for (const auto& entry : fs::directory_iterator(std::string(FEDSIM_SOURCE_DIR) + "/deploy")) {
+  for (const auto& entry : fs::directory_iterator(fedsim::util::source_dir() + "/deploy")) {
     if (entry.path().extension() != ".yaml") continue;
     SCOPED_TRACE(entry.path().string());
     const Deployment d = load_deployment(entry.path().string());
@@ -46,7 +47,7 @@ TEST(Graph, ShippedDeploymentsHaveNoProblems) {
 }
 
 TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
-  const std::string path = std::string(FEDSIM_SOURCE_DIR) + "/deploy/default.yaml";
+  const std::string path = fedsim::util::source_dir() + "/deploy/default.yaml";
   const DataFlowGraph graph =
       build_graph(load_deployment(path), deployment_vars(path, testing::TempDir() + "graph_out"));
   const std::string dot = graph_dot(graph);
@@ -64,7 +65,7 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
                       "control_loading monitors fedsim/autopilot_state: no federate writes it here"),
             graph.notes.end());
   // docs/architecture.md shows this graph: its DOT is the code's (redraw: target docs_images).
-  std::ifstream committed(std::string(FEDSIM_SOURCE_DIR) + "/docs/images/federation_default.dot");
+  std::ifstream committed(fedsim::util::source_dir() + "/docs/images/federation_default.dot");
   const std::string committed_dot((std::istreambuf_iterator<char>(committed)),
                                   std::istreambuf_iterator<char>());
   EXPECT_EQ(committed_dot, dot) << "docs/images/federation_default.dot is out of date";

@@ -2,6 +2,7 @@
 // and the navdb fixtures (distances and bearings against GeographicLib), and a clear error with
 // exit status 2 for every bad argument.
 #include "fedsim/nav_cli.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/navdb/test/navdb_test_support.hpp"
 #include "common/units/units.hpp"
@@ -22,7 +23,7 @@ struct Result {
   std::string err;
 };
 
-Result run(const std::string& arguments, const std::string& db = FEDSIM_NAVDB_FILE_FOR_TESTS) {
+Result run(const std::string& arguments, const std::string& db = fedsim::util::navdb_file()) {
   CLI::App app{"fedsim"};
   std::ostringstream out, err;
   Result result;

@@ -1,6 +1,7 @@
 // `fedsim soak`'s pure parts: VmRSS parsing, frame-gap counting, the verdict and its report, the
 // option checks; and that deploy/soak.yaml stays the default federation.
 #include "fedsim/deployment.hpp"
+#include "common/util/build_paths.hpp"
 #include "fedsim/soak.hpp"
 
 #include <gtest/gtest.h>
@@ -128,8 +129,8 @@ TEST(SoakOptions, AreChecked) {
 }
 
 TEST(SoakDeployment, IsTheDefaultFederationInRealtime) {
-  const auto def = load_deployment(FEDSIM_SOURCE_DIR "/deploy/default.yaml");
-  const auto soak = load_deployment(FEDSIM_SOURCE_DIR "/deploy/soak.yaml");
+  const auto def = load_deployment(fedsim::util::source_dir() + "/deploy/default.yaml");
+  const auto soak = load_deployment(fedsim::util::source_dir() + "/deploy/soak.yaml");
   EXPECT_EQ(soak.mode, "realtime");
   EXPECT_EQ(soak.rate_hz, def.rate_hz);
   EXPECT_TRUE(soak.after.empty());

@@ -2,6 +2,7 @@
 // synthetic signals with known period and damping (and signals without an oscillation, the
 // negative controls), the comparison and the report.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -335,10 +336,10 @@ TEST(QtgReport, HtmlHasSummaryPlotsAndEscapes) {
 }
 
 TEST(QtgGuide, EveryTestFileInTheRepositoryLoads) {
-  const auto files = find_tests(FEDSIM_QTG_DATA_DIR);
+  const auto files = find_tests(fedsim::util::data_dir() + "/qtg");
   EXPECT_FALSE(files.empty());
   // deployments and scenarios are named from the source tree, as fedsim-qtg looks them up
-  for (const auto& f : files) EXPECT_NO_THROW(load_test(f, {FEDSIM_SOURCE_DIR})) << f;
+  for (const auto& f : files) EXPECT_NO_THROW(load_test(f, {fedsim::util::source_dir()})) << f;
 }
 
 TEST(QtgChannels, ReferenceCsvRoundTripAndUnitsInHeaders) {
@@ -397,7 +398,7 @@ checks:
 
 std::string federation_error(const std::string& text) {
   try {
-    load_test(write("f.yaml", text), {FEDSIM_SOURCE_DIR});
+    load_test(write("f.yaml", text), {fedsim::util::source_dir()});
     return "";
   } catch (const fedsim::util::ConfigError& e) {
     return e.what();
@@ -407,7 +408,7 @@ std::string federation_error(const std::string& text) {
 }  // namespace
 
 TEST(QtgFederation, FileLoadsWithLimitsAndWhile) {
-  const QtgTest t = load_test(write("f.yaml", kFederation), {FEDSIM_SOURCE_DIR});
+  const QtgTest t = load_test(write("f.yaml", kFederation), {fedsim::util::source_dir()});
   ASSERT_TRUE(t.federation);
   EXPECT_NE(t.federation->deployment.find("deploy/qtg/b737-ils-autoland.yaml"), std::string::npos);
   ASSERT_TRUE(t.runway);
@@ -522,7 +523,7 @@ TEST(QtgFederation, LimitsMaxAbsAndWhileCondition) {
 }
 
 TEST(QtgFederation, LimitReportShowsTheRange) {
-  QtgTest t = load_test(write("f.yaml", kFederation), {FEDSIM_SOURCE_DIR});
+  QtgTest t = load_test(write("f.yaml", kFederation), {fedsim::util::source_dir()});
   Channels flown;
   for (int i = 0; i <= 400; ++i) {
     const double t_s = i;

@@ -1,5 +1,6 @@
 // Runs fedsim-spline on the seed's Table 2.5 and checks the dense table against f1tab (seed 2.9).
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -15,10 +16,10 @@ namespace {
 using fedsim::testing::kF1tab;  // seed section 2.9, f1tab[]
 
 XyData run_tool(const std::string& arguments) {
-  const std::string input = std::string(FEDSIM_TEST_DATA_DIR) + "/spline/table_2_5.csv";
+  const std::string input = fedsim::util::test_data_dir() + "/spline/table_2_5.csv";
   const std::string output = ::testing::TempDir() + "fedsim_spline_test.csv";
   const std::string command =
-      std::string(FEDSIM_SPLINE_TOOL) + " " + input + " -o " + output + " " + arguments;
+      (fedsim::util::bin_dir() + "/fedsim-spline") + " " + input + " -o " + output + " " + arguments;
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   std::ifstream in(output);
   return read_xy_csv(in, output);

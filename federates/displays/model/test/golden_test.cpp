@@ -7,6 +7,7 @@
 // speed tape and readout), each fail it.
 // FEDSIM_UPDATE_GOLDEN=1 rewrites the stored picture (review it before committing).
 #include "displays/model/test/test_support.hpp"
+#include "common/util/build_paths.hpp"
 #include "visual/model/image_compare.hpp"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 const visual::ImageTolerance kPfdTolerance{1.0, 0.0025, 48};
-const std::string kGolden = std::string(FEDSIM_DISPLAYS_GOLDEN_DIR) + "/pfd_known_state.png";
+const std::string kGolden = fedsim::util::source_dir() + "/federates/displays/model/test/golden" + "/pfd_known_state.png";
 
 PfdInputs known_state() {
   PfdInputs in;

@@ -7,6 +7,7 @@
 // navigation federate's VOR readings; the instructor's autopilot failure disengages it with an
 // alert; a bad MCP panel is rejected and counted.
 #include "flight/federate/flight_program.hpp"
+#include "common/util/build_paths.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/landing_figures.hpp"
 #include "io/io_component.hpp"
@@ -37,7 +38,7 @@ constexpr double kDeg = units::kDegToRad;
 /// The pilot's side of the approach: the profile deploy/ils-autoland.yaml flies (NAV1 on I-GWQ
 /// 111.70 MHz, A/T armed, CMD, ALT HLD and SPEED, then 145 kt, autobrake 2 and APP).
 std::string approach_profile() {
-  std::ifstream in(std::string(FEDSIM_DATA_DIR) + "/profiles/ils_autoland.csv");
+  std::ifstream in(fedsim::util::data_dir() + "/profiles/ils_autoland.csv");
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_FALSE(text.str().empty()) << "data/profiles/ils_autoland.csv";

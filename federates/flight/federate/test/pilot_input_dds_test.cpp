@@ -4,6 +4,7 @@
 // (as docs/interop.md asks of a trainer), and reads back fedsim/applied_controls and
 // fedsim/aircraft_state. Each test has its own DDS domain.
 #include "common/runtime/federate_options.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/runtime/publisher.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_catalogue.hpp"
@@ -27,7 +28,7 @@ namespace {
 
 using util::ChildProcess;
 
-std::string bin(const std::string& name) { return std::string(FEDSIM_BIN_DIR) + "/" + name; }
+std::string bin(const std::string& name) { return fedsim::util::bin_dir() + "/" + name; }
 
 struct Federation {
   Federation(int domain, const std::string& tag, double duration_s) : dir(util::temp_dir(tag)) {

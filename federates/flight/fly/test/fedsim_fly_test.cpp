@@ -2,6 +2,7 @@
 // codes for bad input and failed trims (and no output then), input profiles absolute and
 // relative, IC files, and bit-identical repeats.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <algorithm>
@@ -46,7 +47,7 @@ class FedsimFly : public ::testing::Test {
   }
 
   FlyRun fly(std::vector<std::string> args) const {
-    args.insert(args.begin(), FEDSIM_FLY_BINARY);
+    args.insert(args.begin(), (fedsim::util::bin_dir() + "/fedsim-fly"));
     util::ChildProcess child(args, path("fly.log"));
     FlyRun run;
     EXPECT_TRUE(child.wait(120.0)) << "fedsim-fly did not finish";

@@ -1,4 +1,5 @@
 #include "flight/model/afcs/ils_approach_source.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/csv/csv_reader.hpp"
 #include "common/navdb/ils_row.hpp"
@@ -48,7 +49,7 @@ nav::IlsApproach load_ils_approach(const std::string& ils_csv_path, const Runway
 }
 
 nav::IlsApproach load_default_ils_approach(const std::string& airport, const std::string& runway) {
-  return load_ils_approach(std::string(FEDSIM_DATA_DIR) + "/nav/ils.csv", RunwayTable::load_default(),
+  return load_ils_approach(fedsim::util::data_dir() + "/nav/ils.csv", RunwayTable::load_default(),
                            airport, runway);
 }
 

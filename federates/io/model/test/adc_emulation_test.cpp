@@ -2,6 +2,7 @@
 // figure, counts through the transducer, conditioning and converter, the quantisation error of
 // the round trip, seeded noise, drift, and debounced discretes.
 #include "io/model/adc_emulation.hpp"
+#include "common/util/build_paths.hpp"
 #include "io/model/input_profile.hpp"
 
 #include "common/util/config_node.hpp"
@@ -183,7 +184,7 @@ discretes:
 }
 
 TEST(ShippedAdcFiles, TheC172InterfaceLoadsAndItsChainsFitTheirConverters) {
-  const AdcSpec s = AdcSpec::load_file(std::string(FEDSIM_DATA_DIR) + "/inceptors/adc_c172.yaml");
+  const AdcSpec s = AdcSpec::load_file(fedsim::util::data_dir() + "/inceptors/adc_c172.yaml");
   ASSERT_EQ(s.channels.size(), 4u);
   for (const auto& c : s.channels) EXPECT_NO_THROW(c.validate(c.name + ": "));
   EXPECT_EQ(s.discretes.size(), 2u);

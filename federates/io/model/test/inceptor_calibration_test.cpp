@@ -2,6 +2,7 @@
 // reversal, dead zone, expo, detents), debounced and toggled contacts, the calibration file's
 // checks, and `fedsim io calibrate`'s recorder.
 #include "io/model/inceptor_calibration.hpp"
+#include "common/util/build_paths.hpp"
 #include "io/model/inceptor_mapper.hpp"
 
 #include "common/util/config_node.hpp"
@@ -199,7 +200,7 @@ TEST(CalibrationRecorder, RecordsTheStopsAndTheRestAndRefusesAnAxisNotMoved) {
 }
 
 TEST(ShippedInceptorFiles, TheExampleCalibrationAndTheC172InterfaceLoad) {
-  const InceptorCalibration c = InceptorCalibration::load_file(std::string(FEDSIM_DATA_DIR) + "/inceptors/example_stick.yaml");
+  const InceptorCalibration c = InceptorCalibration::load_file(fedsim::util::data_dir() + "/inceptors/example_stick.yaml");
   EXPECT_EQ(c.axes.size(), 5u);
   EXPECT_EQ(c.discretes.size(), 3u);
 }

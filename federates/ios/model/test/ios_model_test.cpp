@@ -1,6 +1,7 @@
 // The station's pure parts: who may use it, the field registry, command confirmation from what
 // the federation reports, and the map around an airport.
 #include "ios/model/access_policy.hpp"
+#include "common/util/build_paths.hpp"
 #include "ios/model/command_tracker.hpp"
 #include "ios/model/live_fields.hpp"
 #include "ios/model/map_layers.hpp"
@@ -139,9 +140,9 @@ TEST(CommandTracker, WeatherIsConfirmedByTheWindAtTheAircraft) {
   ASSERT_EQ(tracker.update(0.2, seen.lookup()).size(), 1u);
 }
 
-#ifdef FEDSIM_NAVDB_FILE_FOR_TESTS
+#ifdef fedsim::util::navdb_file()
 TEST(MapLayers, KsfoRunwaysIlsAndNavaids) {
-  const auto db = nav::NavDatabase::open(FEDSIM_NAVDB_FILE_FOR_TESTS);
+  const auto db = nav::NavDatabase::open(fedsim::util::navdb_file());
   const auto map = nlohmann::json::parse(map_json(db, "KSFO", 20));
   EXPECT_EQ(map["runways"].size(), 8u);  // 01L/R, 19L/R, 10L/R, 28L/R
   EXPECT_EQ(map["ils"].size(), 2u);      // 28L, 28R in the ILS table

@@ -1,6 +1,7 @@
 // The station's server over real sockets on the loopback: the page, the API, the WebSocket push,
 // and the refusals (a non-loopback bind without a token, a port in use, a missing page).
 #include "ios/server/web_server.hpp"
+#include "common/util/build_paths.hpp"
 
 #include <civetweb.h>
 #include <gtest/gtest.h>
@@ -38,7 +39,7 @@ std::string http(int port, const std::string& method, const std::string& path, c
 ServerOptions loopback_any_port() {
   ServerOptions o;
   o.port = 0;
-  o.web_root = FEDSIM_IOS_WEB_ROOT;
+  o.web_root = fedsim::util::source_dir() + "/federates/ios/web";
   return o;
 }
 

@@ -3,6 +3,7 @@
 // lengths, a typo, an out-of-range or non-finite value, a neutral pose out of the jacks' reach
 // and a period the filters cannot run at are refused naming the file, line and field.
 #include "motion/model/motion_parameter_file.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/units/units.hpp"
 #include "motion/model/stewart_kinematics.hpp"
@@ -28,7 +29,7 @@ std::string error_of(const std::string& text, double dt_s = 0.02) {
 
 TEST(MotionParameterFile, TheShippedFileIsTheBuiltInTuning) {
   const MotionPlatformParameters file =
-      load_motion_parameters(std::string(FEDSIM_DATA_DIR) + "/motion/washout.yaml", 0.02);
+      load_motion_parameters(fedsim::util::data_dir() + "/motion/washout.yaml", 0.02);
   const MotionPlatformParameters built_in;
   for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(file.washout.translational[i].gain, built_in.washout.translational[i].gain) << i;
@@ -91,7 +92,7 @@ void expect_same_geometry(const StewartGeometry& a, const StewartGeometry& b) {
 
 TEST(MotionParameterFile, TheShippedGeometryAndJacksAreTheBuiltInDesign) {
   const MotionPlatformParameters file =
-      load_motion_parameters(std::string(FEDSIM_DATA_DIR) + "/motion/washout.yaml", 0.02);
+      load_motion_parameters(fedsim::util::data_dir() + "/motion/washout.yaml", 0.02);
   const MotionPlatformParameters built_in;
   expect_same_geometry(file.geometry, built_in.geometry);
   EXPECT_EQ(file.actuator.natural_frequency_radps, built_in.actuator.natural_frequency_radps);

@@ -1,6 +1,7 @@
 // Channel files: the shipped ones load (centre; left/centre/right meeting edge to edge), angles
 // in degrees become radians, and malformed files are refused naming the file, line and field.
 #include "visual/model/channel_file.hpp"
+#include "common/util/build_paths.hpp"
 
 #include "common/units/units.hpp"
 
@@ -23,18 +24,18 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(ChannelFile, TheShippedFilesLoad) {
-  const auto centre = load_channels(std::string(FEDSIM_TEST_DATA_DIR) + "/../../data/visual/channels.yaml");
+  const auto centre = load_channels(fedsim::util::test_data_dir() + "/../../data/visual/channels.yaml");
   ASSERT_EQ(centre.size(), 1u);
   EXPECT_EQ(centre[0].name, "centre");
   EXPECT_EQ(centre[0].width_px, 800);
   EXPECT_EQ(centre[0].height_px, 600);
-  const auto three = load_channels(std::string(FEDSIM_TEST_DATA_DIR) + "/../../data/visual/three_channels.yaml");
+  const auto three = load_channels(fedsim::util::test_data_dir() + "/../../data/visual/three_channels.yaml");
   ASSERT_EQ(three.size(), 3u);
   // Edge to edge: the side channels turn by one full horizontal field of view.
   EXPECT_NEAR(three[0].heading_offset_rad, -three[1].horizontal_fov_rad, 1e-12);
   EXPECT_NEAR(three[2].heading_offset_rad, three[1].horizontal_fov_rad, 1e-12);
   const ChannelConfig right =
-      load_channel(std::string(FEDSIM_TEST_DATA_DIR) + "/../../data/visual/three_channels.yaml", "right");
+      load_channel(fedsim::util::test_data_dir() + "/../../data/visual/three_channels.yaml", "right");
   EXPECT_EQ(right.name, "right");
 }
 
@@ -63,7 +64,7 @@ TEST(ChannelFile, MalformedFilesNameFileLineAndField) {
   EXPECT_NE(e.find("channels.yaml:3"), std::string::npos) << e;
   EXPECT_EQ(error_of("channels:\n  - {name: c}\n"), "");  // negative control: a good one passes
   try {
-    load_channel(std::string(FEDSIM_TEST_DATA_DIR) + "/../../data/visual/three_channels.yaml", "top");
+    load_channel(fedsim::util::test_data_dir() + "/../../data/visual/three_channels.yaml", "top");
     FAIL();
   } catch (const util::ConfigError& err) {
     EXPECT_NE(std::string(err.what()).find("left, centre, right"), std::string::npos) << err.what();

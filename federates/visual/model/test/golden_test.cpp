@@ -5,6 +5,7 @@
 // comparison. FEDSIM_UPDATE_GOLDEN=1 rewrites the stored picture (review it before committing).
 // Also: compare_images() itself (identical, one changed pixel, size mismatch).
 #include "visual/model/image_compare.hpp"
+#include "common/util/build_paths.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/test_support.hpp"
 
@@ -19,7 +20,7 @@ namespace {
 
 using test::kDegToRad;
 
-const std::string kGolden = std::string(FEDSIM_VISUAL_GOLDEN_DIR) + "/ksfo_28r_1nm.png";
+const std::string kGolden = fedsim::util::source_dir() + "/federates/visual/model/test/golden" + "/ksfo_28r_1nm.png";
 
 Image render_from(double pitch_offset_deg) {
   static Renderer renderer(build_airport_scene(test::ksfo_runway_ends(), test::ksfo_options()));

@@ -2,6 +2,7 @@
 // against hand-computed order statistics, and a 3-landing smoke run through the writers (the
 // full run, 100+ landings, is the program fedsim-autoland-mc, not a test).
 #include "flight/autoland/monte_carlo/autoland_monte_carlo.hpp"
+#include "common/util/build_paths.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 
 #include <gtest/gtest.h>
@@ -84,7 +85,7 @@ TEST(AutolandMonteCarlo, BadRangesAreNamed) {
 
 TEST(AutolandMonteCarlo, SmokeRunOfThreeLandings) {
   const auto runway = RunwayCentreline::from_table(RunwayTable::load_default(), "KSFO", "28R");
-  const AircraftPack pack = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
+  const AircraftPack pack = load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/b737.yaml");
   std::vector<RunResult> results;
   for (const Scenario& s : draws(1, 3)) results.push_back(fly_scenario(s, pack, ksfo_28r(), runway));
   for (const RunResult& r : results) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/units/units.hpp"
+#include "common/util/build_paths.hpp"
 #include "flight/model/afcs/closed_loop_flight.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/lateral_guidance.hpp"
@@ -43,7 +44,7 @@ inline const nav::IlsApproach& ksfo_28r() {
 }
 
 inline AircraftPack b737_pack() {
-  return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
+  return load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/b737.yaml");
 }
 
 /// Landing configuration: flaps 30 (0.875 of the 737's 40 deg travel), gear down.

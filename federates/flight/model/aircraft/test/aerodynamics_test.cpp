@@ -2,6 +2,7 @@
 // stability-derivative signs, force directions, NASA brick damping moments, hysteresis, CL^2,
 // and the flow beyond the packs' data (tailwind, crosswind, flat fall).
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <algorithm>
@@ -23,7 +24,7 @@ constexpr double kPi = units::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 AircraftPack pack(const std::string& name) {
-  return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);
+  return load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/" + name);
 }
 
 // Cruise-like air data; everything else zero (flaps up, controls neutral, out of ground effect).

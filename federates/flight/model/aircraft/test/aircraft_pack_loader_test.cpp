@@ -1,6 +1,7 @@
 // Tests of the aircraft-pack loader: the shipped packs load with the JSBSim/NASA figures
 // converted to SI, and every deliberately broken pack fails at the right file, line and field.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <cmath>
@@ -25,10 +26,10 @@ constexpr double kLbfPerFtToNPerM = 4.4482216152605 / kFt;
 constexpr double kDeg = units::kDegToRad;
 
 std::string data_pack(const std::string& name) {
-  return std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name;
+  return fedsim::util::data_dir() + "/aircraft/" + name;
 }
 std::string test_data(const std::string& name) {
-  return std::string(FEDSIM_TEST_DATA_DIR) + "/aircraft/" + name;
+  return fedsim::util::test_data_dir() + "/aircraft/" + name;
 }
 
 // JSBSim structural (x aft, y right, z up), inches -> pack frame metres.
@@ -50,7 +51,7 @@ void expect_vector_near(const Eigen::Vector3d& actual, const Eigen::Vector3d& ex
 
 TEST(AircraftPackLoader, EveryShippedPackLoads) {
   int count = 0;
-  for (const auto& entry : fs::directory_iterator(std::string(FEDSIM_DATA_DIR) + "/aircraft")) {
+  for (const auto& entry : fs::directory_iterator(fedsim::util::data_dir() + "/aircraft")) {
     if (entry.path().extension() != ".yaml") continue;
     if (entry.path().string().ends_with(".calibration.yaml")) continue;  // overlays, not packs
     SCOPED_TRACE(entry.path().string());

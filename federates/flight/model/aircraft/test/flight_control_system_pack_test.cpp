@@ -1,6 +1,7 @@
 // The packs' flight control system: the 737's yaw damper (from JSBSim's <flight_control>) and
 // stabiliser trim, the C172's trim tab, and the loader's checks of both sections.
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -13,7 +14,7 @@ namespace fedsim::flight {
 namespace {
 
 std::string pack_text(const std::string& name) {
-  std::ifstream in(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);
+  std::ifstream in(fedsim::util::data_dir() + "/aircraft/" + name);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
@@ -27,7 +28,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 TEST(FlightControlSystemPack, The737HasItsJsbsimYawDamperAndAStabiliserTrim) {
-  const AircraftPack p = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml");
+  const AircraftPack p = load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/b737.yaml");
   ASSERT_TRUE(p.flight_controls.yaw_damper);
   const YawDamperSpec& yd = *p.flight_controls.yaw_damper;
   // 737.xml: rudder-sum += r-aero-rad_sec x table(Mach: 0 to 0.10 -> 0, 0.11 -> 1), twice;
@@ -42,14 +43,14 @@ TEST(FlightControlSystemPack, The737HasItsJsbsimYawDamperAndAStabiliserTrim) {
 }
 
 TEST(FlightControlSystemPack, TheC172HasATrimTabAndNoYawDamper) {
-  const AircraftPack p = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml");
+  const AircraftPack p = load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/c172.yaml");
   EXPECT_FALSE(p.flight_controls.yaw_damper);
   ASSERT_TRUE(p.flight_controls.pitch_trim);
   EXPECT_EQ(p.flight_controls.pitch_trim->kind, PitchTrimKind::kTab);
 }
 
 TEST(FlightControlSystemPack, TheC172HasItsJsbsimWingLeveller) {
-  const AircraftPack p = load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/c172.yaml");
+  const AircraftPack p = load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/c172.yaml");
   ASSERT_TRUE(p.flight_controls.wing_leveller);
   const WingLevellerSpec& w = *p.flight_controls.wing_leveller;
   // c172ap.xml: ap/roll-pid-kp 50, -ki 5, -kd 17; the output switch passes -PID.
@@ -58,7 +59,7 @@ TEST(FlightControlSystemPack, TheC172HasItsJsbsimWingLeveller) {
   EXPECT_DOUBLE_EQ(w.bank_rate_gain_per_radps, 17.0);
   EXPECT_TRUE(w.airborne_only);       // the selector tests gear WOW == 0
   EXPECT_FALSE(w.engaged_at_start);   // the pilot's switch engages it
-  EXPECT_FALSE(load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/b737.yaml")
+  EXPECT_FALSE(load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/b737.yaml")
                    .flight_controls.wing_leveller);
 }
 

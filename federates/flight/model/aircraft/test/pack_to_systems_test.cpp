@@ -1,6 +1,7 @@
 // Tests that the shipped packs fill the systems models' Params and that the models built from
 // them reproduce pack figures (loaded mass, static thrust, surface travel).
 #include <gtest/gtest.h>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 
 #include <array>
@@ -17,7 +18,7 @@ constexpr double kLbf = 4.4482216152605;
 constexpr double kDeg = units::kDegToRad;
 
 AircraftPack pack(const std::string& name) {
-  return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);
+  return load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/" + name);
 }
 
 TEST(PackToSystems, C172LoadedMassIsTheMaximumGrossWeight) {

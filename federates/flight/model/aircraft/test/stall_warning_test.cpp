@@ -1,6 +1,7 @@
 // The packs' stall-warning angles (the stick shaker's, flight/model/aircraft/stall_warning.hpp)
 // from their own lift build-up: the angle of maximum lift and where CL reaches CL_max / 1.05^2.
 #include "flight/model/aircraft/stall_warning.hpp"
+#include "common/util/build_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 AircraftPack pack(const std::string& name) {
-  return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);
+  return load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/" + name);
 }
 
 TEST(StallWarning, TheC172WarnsBelowItsStallAngleAndFlapsRaiseItsMaximumLift) {

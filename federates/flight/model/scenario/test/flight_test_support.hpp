@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -25,7 +26,7 @@ inline constexpr double kKt = units::kKtToMps;
 inline constexpr double kG0 = units::kStandardGravityMps2;
 
 inline AircraftPack load_pack(const std::string& name) {
-  return load_aircraft_pack(std::string(FEDSIM_DATA_DIR) + "/aircraft/" + name);
+  return load_aircraft_pack(fedsim::util::data_dir() + "/aircraft/" + name);
 }
 
 inline std::unique_ptr<AircraftModel> make_model(const std::string& pack,

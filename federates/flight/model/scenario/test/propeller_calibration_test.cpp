@@ -3,6 +3,7 @@
 // identifies with the recorded fade band, that the pack carries them, and that it refuses what
 // it cannot do.
 #include "flight/model/scenario/propeller_calibration.hpp"
+#include "common/util/build_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@ using namespace testing;
 
 /// The C172's calibration overlay (data/aircraft/c172.calibration.yaml), propeller section.
 util::ConfigNode c172_overlay_propeller() {
-  return util::ConfigNode::load_file(std::string(FEDSIM_DATA_DIR) +
+  return util::ConfigNode::load_file(fedsim::util::data_dir() +
                                      "/aircraft/c172.calibration.yaml")
       .child("engines")
       .child("engine")
