@@ -189,3 +189,28 @@ function(fedsim_write_layers_dot file)
   string(APPEND dot "}\n")
   file(WRITE ${file} "${dot}")
 endfunction()
+
+# Writes the programs the build makes for users, one "name folder" a line: every executable
+# target named `fedsim` or `fedsim-*` (test executables are named `*_tests`). The benchmarks
+# (`fedsim-bench-*`) go to their own list. docs/programs.md and docs/benchmarks.md must name
+# each one (tests/docs: Docs.ProgramsTableIsComplete, Docs.BenchmarksTableIsComplete).
+function(fedsim_write_program_lists programs_file benchmarks_file)
+  _fedsim_collect_targets(${CMAKE_SOURCE_DIR} all_targets)
+  set(programs "")
+  set(benchmarks "")
+  foreach(t IN LISTS all_targets)
+    get_target_property(type ${t} TYPE)
+    if(NOT type STREQUAL "EXECUTABLE" OR NOT t MATCHES "^fedsim(-.+)?$")
+      continue()
+    endif()
+    get_target_property(source_dir ${t} SOURCE_DIR)
+    file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR} ${source_dir})
+    if(t MATCHES "^fedsim-bench-")
+      string(APPEND benchmarks "${t} ${rel}\n")
+    else()
+      string(APPEND programs "${t} ${rel}\n")
+    endif()
+  endforeach()
+  file(WRITE ${programs_file} "${programs}")
+  file(WRITE ${benchmarks_file} "${benchmarks}")
+endfunction()

@@ -56,6 +56,30 @@ FederateSpec read_federate(const ConfigNode& node) {
   return spec;
 }
 
+/// An after-step: a command (a list), or {run: command, needs: [files], whole_run: bool}.
+/// A needed file must be named in the step's arguments: `needs` says which of what the step
+/// reads may be missing, so a name that is not among them is a typo that would skip it forever.
+AfterStep read_after_step(const ConfigNode& node) {
+  AfterStep step;
+  if (!node.yaml().IsMap()) {
+    for (const auto& word : node.items()) step.argv.push_back(word.as_string());
+    if (step.argv.empty()) node.fail("an 'after' command is empty");
+    return step;
+  }
+  node.reject_unknown_keys({"run", "needs", "whole_run"});
+  step.argv = string_list(node, "run");
+  if (step.argv.empty()) node.fail_at("run", "an 'after' command is empty (or missing)");
+  step.needs = string_list(node, "needs");
+  for (const auto& file : step.needs) {
+    const bool named = std::any_of(step.argv.begin(), step.argv.end(), [&file](const std::string& word) {
+      return !file.empty() && word.find(file) != std::string::npos;
+    });
+    if (!named) node.fail_at("needs", "'" + file + "' is not named in the step's arguments");
+  }
+  step.whole_run = node.boolean_or("whole_run", false);
+  return step;
+}
+
 Deployment read(const ConfigNode& root) {
   root.reject_unknown_keys({"name", "mode", "rate_hz", "domain", "qos_file", "participant_profile",
                             "sync_qos", "timing", "federates", "after"});
@@ -87,12 +111,7 @@ Deployment read(const ConfigNode& root) {
   }
   if (d.federates.empty()) root.fail_at("federates", "lists no federate");
   if (root.has("after")) {
-    for (const auto& cmd : root.child("after").items()) {
-      std::vector<std::string> argv;
-      for (const auto& word : cmd.items()) argv.push_back(word.as_string());
-      if (argv.empty()) cmd.fail("an 'after' command is empty");
-      d.after.push_back(std::move(argv));
-    }
+    for (const auto& item : root.child("after").items()) d.after.push_back(read_after_step(item));
   }
   return d;
 }

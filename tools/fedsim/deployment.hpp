@@ -14,7 +14,19 @@
 //     - {name: flight, binary: fedsim-flight, restart: on-failure, max_restarts: 3}
 //     - {name: viewer, binary: fedsim, args: [topic, hz, fedsim/aircraft_state], lockstep: false,
 //        federate_options: false}
-//   after: [[gnuplot, "${OUT_DIR}/plot.gp"]]   # run once the federation stopped cleanly
+//   after:                    # run in order once the federation stopped cleanly
+//     - [gnuplot, "${OUT_DIR}/plot.gp"]
+//     - run: [fedsim, image, montage, "${OUT_DIR}/m.png", "${OUT_DIR}/a.png", "${OUT_DIR}/b.png"]
+//       needs: ["${OUT_DIR}/a.png", "${OUT_DIR}/b.png"]
+//     - {run: [fedsim, qtg, --recording, "${OUT_DIR}", --only, x], whole_run: true}
+//
+// An after-step is a command (a list), or a map: `run:` the command, `needs:` the files it reads
+// that a good run may not make (a picture taken at a height the flight may not reach), each named
+// in its arguments, and `whole_run: true` for a step that judges the whole flight. Such a step is
+// skipped, named and with its reason, when this run did not write a file it needs (missing, or
+// left from an earlier run in the same folder) or when --duration cut the run short; the run's
+// verdict is then the federation's. Inputs every run that ran makes (the recorded CSVs) are not
+// listed: a plot that finds none has failed, and fails the run.
 //
 // Substitutions in args: ${SOURCE_DIR}, ${DATA_DIR}, ${DEPLOY_DIR} (the file's folder),
 // ${OUT_DIR} (fedsim run --out), ${BIN_DIR} (where the fedsim binaries are).
@@ -43,6 +55,13 @@ struct FederateSpec {
   int max_restarts = 3;            // restarts allowed over the run with restart: on-failure
 };
 
+/// One entry of `after:` (see the top of this file).
+struct AfterStep {
+  std::vector<std::string> argv;   // the program and its arguments, ${...} not yet substituted
+  std::vector<std::string> needs;  // files this run must have written for the step to run
+  bool whole_run = false;          // judges the whole flight: skipped when --duration cut it short
+};
+
 struct Deployment {
   std::string file;
   std::string name;
@@ -56,7 +75,7 @@ struct Deployment {
   std::vector<std::string> timing_args;
   bool has_timing = true;
   std::vector<FederateSpec> federates;
-  std::vector<std::vector<std::string>> after;
+  std::vector<AfterStep> after;
 };
 
 /// Loads and validates a deployment; throws util::ConfigError ("file:line: field: problem").

@@ -96,6 +96,7 @@ std::uint64_t frames_of(const Deployment& d, const std::vector<std::string>& tim
 
 int run_in_process(const RunOptions& options) {
   runtime::install_shutdown_handler();
+  const auto files_since = fs::file_time_type::clock::now();  // what an after-step needs is newer
   Deployment d;
   std::map<std::string, std::string> vars;
   std::string out_dir;
@@ -219,7 +220,9 @@ int run_in_process(const RunOptions& options) {
     std::cout << "fedsim run: stopped after " << done << " frames by a shutdown command (a scenario's stop)\n";
   }
   if (!failed && !interrupted && !d.after.empty()) {
-    if (run_after_commands(d, vars, bin_dir(), out_dir + "/logs", options.quiet) != 0) failed = true;
+    // In-process runs have no --duration: the run always reaches its own end.
+    const RunEnd end{files_since, ""};
+    if (run_after_commands(d, vars, bin_dir(), out_dir + "/logs", options.quiet, end) != 0) failed = true;
   }
   std::cout << "fedsim run: " << (failed ? "FAILED" : interrupted ? "interrupted" : "done") << "\n";
   return failed ? 1 : interrupted ? 130 : 0;

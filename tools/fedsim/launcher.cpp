@@ -488,25 +488,69 @@ int domain_from_env(int fallback) {
   return static_cast<int>(value);
 }
 
-/// An after-command's argv, its program resolved; throws util::ConfigError naming the program.
-std::vector<std::string> after_argv(const std::vector<std::string>& words,
-                                    const std::map<std::string, std::string>& vars,
+/// An after-step's argv, its program resolved; throws util::ConfigError naming the program.
+std::vector<std::string> after_argv(const AfterStep& step, const std::map<std::string, std::string>& vars,
                                     const std::string& bin_dir) {
-  std::vector<std::string> argv{resolve_binary(substitute(words[0], vars), bin_dir, "")};
-  for (std::size_t i = 1; i < words.size(); ++i) argv.push_back(substitute(words[i], vars));
+  std::vector<std::string> argv{resolve_binary(substitute(step.argv[0], vars), bin_dir, "")};
+  for (std::size_t i = 1; i < step.argv.size(); ++i) argv.push_back(substitute(step.argv[i], vars));
   return argv;
 }
 
-/// Says at once, not only after the run, that an after-command's program is missing.
+/// Says at once, not only after the run, that an after-step's program is missing.
 void warn_missing_after_programs(const Deployment& d, const std::map<std::string, std::string>& vars,
                                  const std::string& bin_dir) {
-  for (const auto& words : d.after) {
+  for (const auto& step : d.after) {
     try {
-      after_argv(words, vars, bin_dir);
+      after_argv(step, vars, bin_dir);
     } catch (const std::exception& e) {
-      warn() << "warning: after-command '" << words[0] << "' will fail: " << e.what() << "\n";
+      warn() << "warning: after-command '" << step.argv[0] << "' will fail: " << e.what() << "\n";
     }
   }
+}
+
+/// An after-step as `fedsim run` names it: its number (its log is logs/after<number>.log) and its
+/// program with the plain words that follow it: "2 (fedsim image montage)", "1 (gnuplot)".
+std::string after_step_label(int number, const AfterStep& step) {
+  std::string words = step.argv[0];
+  for (std::size_t i = 1; i < step.argv.size() && i <= 2; ++i) {
+    const std::string& w = step.argv[i];
+    const bool plain = !w.empty() && std::all_of(w.begin(), w.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || c == '-' || c == '_';
+    }) && w[0] != '-';
+    if (!plain) break;
+    words += " " + w;
+  }
+  return std::to_string(number) + " (" + words + ")";
+}
+
+/// The kernel stamps a file with a clock that may lag ours by a tick (a few ms): a file written
+/// right after the run started must not look older than it.
+constexpr auto kFileStampSlack = std::chrono::milliseconds(100);
+
+/// Why this run cannot give an after-step what it needs ("" = it can): the whole run it judges
+/// was cut short, or a file it needs was not written by this run (never made, or left in the
+/// same folder by an earlier run: drawing that would present the earlier run as this one).
+std::string unmet_needs(const AfterStep& step, const std::map<std::string, std::string>& vars,
+                        const RunEnd& end) {
+  if (step.whole_run && !end.cut_short.empty()) return "it judges the whole run, which " + end.cut_short;
+  std::vector<std::string> missing;
+  std::vector<std::string> stale;
+  for (const auto& need : step.needs) {
+    const std::string file = substitute(need, vars);
+    std::error_code error;
+    const auto written = fs::last_write_time(file, error);
+    if (error) {
+      missing.push_back(file);
+    } else if (written < end.started - kFileStampSlack) {
+      stale.push_back(file);
+    }
+  }
+  std::string why;
+  if (!missing.empty()) why = "this run did not make " + join(missing);
+  if (!stale.empty()) {
+    why += (why.empty() ? "" : "; ") + std::string("left from an earlier run, not this one: ") + join(stale);
+  }
+  return why;
 }
 
 /// Runs one after-command to its end; true if it stopped cleanly.
@@ -647,6 +691,10 @@ void check_exits(Children& children, Stopper& stopper, bool& failed, bool quiet)
   }
 }
 
+/// The stop reason of a run that --duration cut short (the after-steps that judge a whole run
+/// are skipped).
+const std::string kDurationReached = "duration reached";
+
 /// Runs the federation until every federate stopped; returns the stop reason.
 std::string supervise(Children& children, const RunOptions& options, Progress& progress, double rate_hz,
                       bool& failed) {
@@ -660,7 +708,7 @@ std::string supervise(Children& children, const RunOptions& options, Progress& p
     const std::uint64_t now = util::monotonic_ns();
     if (runtime::shutdown_requested()) stopper.begin("interrupted");
     if (options.duration_s > 0 && now - start_ns >= options.duration_s * 1e9) {
-      stopper.begin("duration reached");
+      stopper.begin(kDurationReached);
     }
     check_exits(children, stopper, failed, options.quiet);
     stopper.step(failed);
@@ -676,25 +724,37 @@ std::string supervise(Children& children, const RunOptions& options, Progress& p
 }  // namespace
 
 int run_after_commands(const Deployment& d, const std::map<std::string, std::string>& vars,
-                       const std::string& bin_dir, const std::string& log_dir, bool quiet) {
+                       const std::string& bin_dir, const std::string& log_dir, bool quiet,
+                       const RunEnd& end) {
   int index = 0;
-  for (const auto& words : d.after) {
+  std::vector<std::string> skipped;
+  for (const auto& step : d.after) {
     if (runtime::shutdown_requested()) return 1;
+    const std::string label = after_step_label(++index, step);
+    if (const std::string why = unmet_needs(step, vars, end); !why.empty()) {
+      std::cout << "fedsim run: after-step " << label << " skipped: " << why << "\n";
+      skipped.push_back(label);
+      continue;
+    }
     Children one;
     one.push_back(std::make_unique<Child>());
     Child& child = *one.front();
-    child.name = "after" + std::to_string(++index);
+    child.name = "after" + std::to_string(index);
     try {
-      child.argv = after_argv(words, vars, bin_dir);
+      child.argv = after_argv(step, vars, bin_dir);
     } catch (const std::exception& e) {  // a missing program fails the run, not the launcher
-      warn() << "after-command '" << words[0] << "' cannot run: " << e.what() << "\n";
+      warn() << "after-command '" << step.argv[0] << "' cannot run: " << e.what() << "\n";
       return 1;
     }
     if (!run_one_after_command(one, log_dir + "/" + child.name + ".log", quiet)) {
-      warn() << "after-command '" << words[0] << "' failed (" << describe_exit(child.status)
+      warn() << "after-command '" << step.argv[0] << "' failed (" << describe_exit(child.status)
              << ")\n";
       return 1;
     }
+  }
+  if (!skipped.empty()) {
+    std::cout << "fedsim run: " << skipped.size() << " of " << d.after.size()
+              << " after-steps skipped, not failed: " << join(skipped) << "\n";
   }
   return 0;
 }
@@ -743,6 +803,7 @@ int run_deployment(const RunOptions& options) {
     return 2;
   }
   warn_missing_after_programs(p.d, p.vars, p.bin_dir);
+  const auto started = fs::file_time_type::clock::now();
   start_all(p);
   Progress progress(p.dds);
   bool failed = false;
@@ -775,7 +836,13 @@ int run_deployment(const RunOptions& options) {
   }
   // An interrupted run gets no after-commands: their input is incomplete.
   if (!failed && !runtime::shutdown_requested() && !p.d.after.empty()) {
-    if (run_after_commands(p.d, p.vars, p.bin_dir, p.log_dir, options.quiet) != 0) failed = true;
+    RunEnd end{started, ""};
+    if (reason == kDurationReached) {
+      std::ostringstream why;
+      why << "--duration stopped after " << options.duration_s << " s";
+      end.cut_short = why.str();
+    }
+    if (run_after_commands(p.d, p.vars, p.bin_dir, p.log_dir, options.quiet, end) != 0) failed = true;
   }
   if (runtime::shutdown_requested()) {
     std::cout << "fedsim run: interrupted (" << signal_name() << ")" << (failed ? "; FAILED" : "")

@@ -5,6 +5,7 @@
 
 #include "fedsim/deployment.hpp"
 
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -47,8 +48,17 @@ std::map<std::string, std::string> deployment_vars(const std::string& deployment
                                                    const std::string& out_dir);
 /// Where the fedsim binaries are (this program's folder).
 std::string bin_dir();
-/// Runs the deployment's after-commands in order; 1 if one failed (named on stderr).
+/// What the after-steps need to know of the run that just stopped.
+struct RunEnd {
+  std::filesystem::file_time_type started;  // a needed file older than this is an earlier run's
+  std::string cut_short;                    // why it stopped before its own end ("" = it did not)
+};
+
+/// Runs the deployment's after-steps in order; 1 if one ran and failed (named on stderr). A step
+/// whose needs this run did not meet (deployment.hpp: `needs`, `whole_run`) is skipped and named,
+/// with the file it lacked or why the run was cut short; a skip is not a failure.
 int run_after_commands(const Deployment& d, const std::map<std::string, std::string>& vars,
-                       const std::string& bin_dir, const std::string& log_dir, bool quiet);
+                       const std::string& bin_dir, const std::string& log_dir, bool quiet,
+                       const RunEnd& end);
 
 }  // namespace fedsim::launcher

@@ -29,7 +29,29 @@ after:
   EXPECT_FALSE(d.federates[1].lockstep);
   EXPECT_EQ(d.timing_args, (std::vector<std::string>{"--frames", "500"}));
   ASSERT_EQ(d.after.size(), 1u);
-  EXPECT_EQ(d.after[0][0], "gnuplot");
+  EXPECT_EQ(d.after[0].argv[0], "gnuplot");
+  EXPECT_TRUE(d.after[0].needs.empty());
+  EXPECT_FALSE(d.after[0].whole_run);
+}
+
+// An after-step as a map: its command, the files it reads that a good run may not make, and
+// whether it judges the whole run (fedsim run skips it, by name, when those are not met).
+TEST(Deployment, ReadsAfterStepsWithTheirNeeds) {
+  const auto d = parse_deployment(R"(
+name: demo
+federates: [{name: a, binary: b}]
+after:
+  - run: [fedsim, image, montage, "${OUT_DIR}/m.png", "${OUT_DIR}/a.png", "${OUT_DIR}/b.png"]
+    needs: ["${OUT_DIR}/a.png", "${OUT_DIR}/b.png"]
+  - {run: [fedsim, qtg, --recording, "${OUT_DIR}"], whole_run: true}
+)", "demo.yaml");
+  ASSERT_EQ(d.after.size(), 2u);
+  EXPECT_EQ(d.after[0].argv.size(), 6u);
+  EXPECT_EQ(d.after[0].needs, (std::vector<std::string>{"${OUT_DIR}/a.png", "${OUT_DIR}/b.png"}));
+  EXPECT_FALSE(d.after[0].whole_run);
+  EXPECT_EQ(d.after[1].argv[1], "qtg");
+  EXPECT_TRUE(d.after[1].needs.empty());
+  EXPECT_TRUE(d.after[1].whole_run);
 }
 
 void expect_error(const std::string& text, const std::string& needle) {
@@ -51,6 +73,18 @@ TEST(Deployment, RejectsBadFilesWithFileLineAndField) {
   expect_error("name: x\nfederates:\n  - {name: a, binray: b}\n", "bad.yaml:3: federates[0].binray: unknown field");
   expect_error("name: x\ndomain: 300\nfederates: [{name: a, binary: b}]\n", "bad.yaml:2: domain: value 300");
   expect_error("name: x\nfederates: [{name: a, binary: b}\n", "bad.yaml:");
+  expect_error("name: x\nfederates: [{name: a, binary: b}]\nafter:\n  - []\n",
+               "bad.yaml:4: after[0]: an 'after' command is empty");
+  expect_error("name: x\nfederates: [{name: a, binary: b}]\nafter:\n  - {needs: [f]}\n",
+               "after[0].run: an 'after' command is empty");
+  expect_error("name: x\nfederates: [{name: a, binary: b}]\nafter:\n  - {run: [c], nedds: [f]}\n",
+               "bad.yaml:4: after[0].nedds: unknown field");
+  expect_error("name: x\nfederates: [{name: a, binary: b}]\nafter:\n  - {run: [c], whole_run: maybe}\n",
+               "after[0].whole_run");
+  // A needed file the step does not name is a typo that would skip the step in every run.
+  expect_error("name: x\nfederates: [{name: a, binary: b}]\nafter:\n"
+               "  - {run: [c, \"${OUT_DIR}/a.png\"], needs: [\"${OUT_DIR}/aa.png\"]}\n",
+               "bad.yaml:4: after[0].needs: '${OUT_DIR}/aa.png' is not named in the step's arguments");
 }
 
 // Names become paths (out/<deployment>/, logs/<federate>.log) and the timing federate's
