@@ -1,54 +1,53 @@
-// fedsim-timing: publishes the frame tick (the seed's node-1 start of frame, section 2.11).
+// fedsim-timing: the federation's frame clock (the seed's node-1 start of frame, section 2.11), a
+// runtime::Driver: the DDS host drives it on its frame thread instead of stepping it
+// (common/runtime/component.hpp). Every decision is model/timekeeper's (pure, tested with a fake
+// clock); this adapter turns port samples into its inputs and its decisions into samples.
 //
-// Subscribes: fedsim/frame_done ("frame_done", liveliness tells a dead federate),
-//             fedsim/federate_status ("status"), fedsim/sim_command ("command").
-// Publishes:  fedsim/frame_tick ("tick") every frame, fedsim/federate_status ("status").
+// Ports (--print-ports):
+//   writes fedsim/frame_tick      ("tick", "tick_reliable" with --sync-qos reliable) every frame
+//          fedsim/federate_status ("status") a lost member's own instance, in state LOST
+//          fedsim/sim_command     ("command") the settings it holds, republished
+//   reads  fedsim/frame_done      ("frame_done"...) every acknowledgement; the liveliness of its
+//                                 writers tells a dead member
+//          fedsim/federate_status ("status") who is ready, stops, fails or is back
+//          fedsim/sim_command     ("command") run-state requests, settings to hold, shutdown
+// Its own status (READY, RUNNING with its frame count, a line for each loss and rejoin,
+// STOPPING) is the host's, as for every federate.
 //
-// Modes: realtime - ticks on absolute CLOCK_MONOTONIC deadlines; a frame whose acknowledgements
-//                   are not all in by the next deadline is an overrun (counted, reported).
-//        lockstep - the next tick only after every expected federate acknowledged the current
-//                   one; as fast as possible (scale 0) or paced at `scale` x real time.
-// A federate that stops acknowledging is reported lost and dropped from the expected set, so
-// lockstep never hangs, in both modes within --ack-timeout of the first tick it did not
-// acknowledge (model/loss_watch.hpp), sooner when it says it stops or fails, when a new process
-// reports under its name, or when the liveliness of its frame_done writer (1.5 s lease) lapses
-// (seen for a killed process; never for a SIGSTOPped one with Fast DDS 2.9 here, in 6 s, with
-// either sync QoS: the acknowledgement age is the bound that holds). A lost federate that reports READY
-// or RUNNING again (restarted, or continued after SIGSTOP) is expected again from the next tick
-// ("rejoined"); a new process under a known name counts as lost and rejoined. Each loss and
-// rejoin is logged, published on fedsim/federate_status (the lost federate's instance in state
-// LOST, and a message in the timing federate's own status) and listed in the summary.
+// Modes and losses: see model/timekeeper.hpp. The liveliness of a member's frame_done writer
+// (1.5 s lease) lapses for a killed process; never for a SIGSTOPped one with Fast DDS 2.9 here,
+// in 6 s, with either sync QoS: the acknowledgement age is the bound that holds. Each loss and
+// rejoin is logged, published on fedsim/federate_status and listed in the summary (printed as
+// one JSON line at the end, and written to --summary-json).
 //
-// Command holder: the timing federate (always in the federation) keeps the latest setting of
-// each kind and target seen on fedsim/sim_command (weather, failures, radios, time of day; see
+// Command holder: the clock (always in the federation) keeps the latest setting of each kind
+// and target seen on fedsim/sim_command (weather, failures, radios, time of day; see
 // common/runtime/command_settings.hpp) and republishes it unchanged from its own
 // transient-local writer, so a federate restarted after the `fedsim command` that sent it
-// exited still gets it (--hold-commands=false turns this off).
+// exited still gets it (--no-hold-commands turns this off).
+//
+// Threads: acknowledgements, statuses and commands are taken on the middleware's threads, under
+// one mutex; in lockstep as fast as possible the next tick goes out right on the thread of the
+// acknowledgement that completed the frame. Everything else (the join, realtime deadlines,
+// repeated ticks, timeouts, LOST statuses) happens in drive(), on the host's frame thread.
+// Statuses and held commands are written outside the mutex: a sample written comes straight
+// back to this process's own reader, whose handler takes it.
 #pragma once
 
-#include "common/runtime/dds_participant.hpp"
-#include "common/runtime/federate_options.hpp"
-#include "common/runtime/publisher.hpp"
-#include "common/runtime/subscription.hpp"
-#include "common/util/latency_stats.hpp"
 #include "common/runtime/command_settings.hpp"
-#include "timing/model/ack_tracker.hpp"
-#include "timing/model/loss_watch.hpp"
-#include "common/frame_clock/run_control.hpp"
+#include "common/runtime/component.hpp"
+#include "common/runtime/federate_main.hpp"
+#include "timing/model/timekeeper.hpp"
 
-#include <spdlog/logger.h>
-
-#include <condition_variable>
-#include <map>
 #include <mutex>
-#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fedsim::timing {
 
 struct TimingOptions {
-  runtime::FederateOptions common;
+  runtime::FederateOptions common;     // --frames and --duration count from the first tick
   double rate_hz = 50.0;               // frame rate [Hz]
   std::string mode = "realtime";       // realtime | lockstep
   double scale = 0.0;                  // lockstep pacing: 0 = as fast as possible, 1 = real time
@@ -64,88 +63,54 @@ struct TimingOptions {
   bool hold_commands = true;           // republish the latest settings for late joiners
 };
 
-struct TimingSummary {
-  std::uint64_t frames = 0;
-  double wall_s = 0.0;
-  std::uint64_t overruns = 0;
-  std::uint64_t resent_ticks = 0;
-  std::vector<std::string> lost;      // every loss, in order
-  std::vector<std::string> rejoined;  // every rejoin, in order
-  std::vector<std::string> still_lost;
-  std::vector<MembershipEvent> events;
-  std::size_t held_settings = 0;
-  util::LatencyStats all_acked;     // tick publish -> last acknowledgement
-  util::LatencyStats period_error;  // realtime: actual - scheduled tick time
-};
+/// The clock's settings from the program's options (throws std::invalid_argument naming a bad one).
+TimekeeperSettings timekeeper_settings(const TimingOptions& options);
 
-class TimingFederate {
+class TimingComponent final : public runtime::Driver {
  public:
-  explicit TimingFederate(TimingOptions options);
-  ~TimingFederate();
-  /// Runs until --frames/--duration/signal/SHUTDOWN; returns the exit code.
-  int run();
+  explicit TimingComponent(TimingOptions options);
+
+  std::optional<std::uint64_t> drive(std::uint64_t now_ns) override;
+  Progress progress() const override;
+  void on_stop() override;
+
+  const TimingOptions& options() const { return options_; }
   TimingSummary summary() const;
   std::string summary_json() const;
 
+  // The arrivals, as the ports deliver them (public for the tests, which drive them by hand).
+  void on_ack(const msg::FrameDone& ack, const runtime::WriterId& writer, std::uint64_t now_ns);
+  void on_status(const msg::FederateStatus& status, std::uint64_t now_ns);
+  void on_command_sample(const msg::SimCommand& command);
+  void on_writer_lost(const runtime::WriterId& writer, std::uint64_t now_ns);
+
  private:
-  void on_ack(const msg::FrameDone& ack, const runtime::fdds::SampleInfo& info);
-  void on_status(const msg::FederateStatus& status);
-  void rejoin_locked(const std::string& federate, const std::string& how);
+  std::optional<std::uint64_t> join_locked(std::uint64_t now_ns);
+  void publish_tick_locked(std::uint64_t now_ns);
+  void handle_reports_locked();
   void hold_command(const msg::SimCommand& command);
-  void on_command(const msg::SimCommand& command);
-  void on_liveliness(const runtime::fdds::LivelinessChangedStatus& status);
-  bool wait_for_federation();
-  void run_realtime();
-  void run_lockstep();
-  void publish_tick_locked();
-  void republish_tick_locked();
-  void remember_writer_locked(const eprosima::fastrtps::rtps::InstanceHandle_t& handle,
-                              const std::string& federate);
-  void mark_lost_locked(const std::string& federate, const std::string& why);
-  void check_ack_timeout_locked(std::uint64_t now_ns);
-  double run_time_s_locked() const;
   void publish_lost_statuses();
-  bool should_stop_locked() const;
-  bool frames_exhausted_locked() const;
-  void publish_status(msg::FederateState state, const std::string& message);
-  void flush_status_messages();
-  bool status_due_locked() const;
 
   TimingOptions options_;
-  std::shared_ptr<spdlog::logger> log_;
-  std::shared_ptr<runtime::DdsParticipant> dds_;
-  std::unique_ptr<runtime::Publisher<msg::FrameTick>> tick_pub_;
-  std::unique_ptr<runtime::Publisher<msg::FederateStatus>> status_pub_;
-  std::unique_ptr<runtime::Publisher<msg::SimCommand>> command_pub_;
-  std::unique_ptr<runtime::Subscription<msg::FrameDone>> ack_sub_;
-  std::unique_ptr<runtime::Subscription<msg::FederateStatus>> status_sub_;
-  std::unique_ptr<runtime::Subscription<msg::SimCommand>> command_sub_;
+  runtime::Output<msg::FrameTick>& ticks_;
+  runtime::Output<msg::FederateStatus>& lost_status_;
+  runtime::Output<msg::SimCommand>& held_commands_;
+  runtime::Input<msg::FrameDone>& acks_;
+  runtime::Input<msg::FederateStatus>& statuses_;
+  runtime::Input<msg::SimCommand>& commands_;
 
   mutable std::mutex mutex_;
-  std::condition_variable cv_;
-  AckTracker tracker_;
-  RunControl run_control_;
+  Timekeeper keeper_;
   msg::FrameTick tick_;
-  bool lockstep_ = false;
-  bool started_ = false;
-  bool stopping_ = false;
-  std::uint64_t ticks_published_ = 0;
-  std::uint64_t tick_publish_ns_ = 0;
-  std::uint64_t last_resend_ns_ = 0;
-  std::uint64_t start_ns_ = 0;
-  std::uint64_t end_ns_ = 0;
-  std::set<std::string> ready_;
-  // frame_done writer -> federate (to name a federate whose liveliness is lost)
-  std::vector<std::pair<eprosima::fastrtps::rtps::InstanceHandle_t, std::string>> writers_;
-  LossWatch loss_watch_;
+  bool waiting_logged_ = false;
+  // frame_done writer -> member (to name a member whose liveliness lapses)
+  std::vector<std::pair<runtime::WriterId, std::string>> writers_;
   std::vector<std::pair<std::string, std::uint32_t>> lost_to_publish_;  // name, pid (under mutex_)
   mutable std::mutex holder_mutex_;
   runtime::SettingHolder holder_;
-  TimingSummary summary_;
-  std::vector<std::string> status_messages_;
-  std::uint64_t next_status_ns_ = 0;  // queued under mutex_, published outside it
-  std::string stop_reason_;
-  int exit_code_ = 0;
 };
+
+/// fedsim-timing's options and component (main.cpp, fedsim run --in-process, fedsim graph).
+runtime::FederateProgram program();
 
 }  // namespace fedsim::timing
