@@ -507,16 +507,20 @@ void Federate::publish_driver_notes(Driver& driver) {
   for (const auto& line : driver.take_notes()) publish_status(msg::FEDERATE_RUNNING, line);
 }
 
+// Frame thread: SIGINT/SIGTERM stop the loop.
+bool Federate::stopped_by_signal() {
+  if (!shutdown_requested()) return false;
+  stop(shutdown_signal() ? "signal " + std::to_string(shutdown_signal()) : "shutdown");
+  return true;
+}
+
 // The frame thread of a driver: drive() when it asked to be, or when it rang; the status as for
 // every federate (RUNNING once it makes frames, then once a second with its frame count).
 void Federate::drive_loop(Driver& driver) {
   auto next_status = std::chrono::steady_clock::now() + kStatusPeriod;
   bool announced_running = false;
   while (!stop_requested_.load()) {
-    if (shutdown_requested()) {
-      stop(shutdown_signal() ? "signal " + std::to_string(shutdown_signal()) : "shutdown");
-      break;
-    }
+    if (stopped_by_signal()) break;
     const std::uint32_t rang = frame_bell_.value();  // before driving: no wake-up is lost
     std::optional<std::uint64_t> next;
     try {
@@ -586,10 +590,7 @@ void Federate::frame_loop() {
   auto next_status = std::chrono::steady_clock::now() + kStatusPeriod;
   bool announced_running = false;
   while (!stop_requested_.load()) {
-    if (shutdown_requested()) {
-      stop(shutdown_signal() ? "signal " + std::to_string(shutdown_signal()) : "shutdown");
-      break;
-    }
+    if (stopped_by_signal()) break;
     if (deadline_ns != 0 && util::monotonic_ns() >= deadline_ns) {
       stop("duration of " + std::to_string(options_.duration_s) + " s reached");
       break;

@@ -150,6 +150,7 @@ class Federate {
   void follow_ticks();
   void frame_loop();
   void drive_loop(Driver& driver);
+  bool stopped_by_signal();
   void publish_driver_notes(Driver& driver);
   std::chrono::nanoseconds watch_ticks();
   void finish();

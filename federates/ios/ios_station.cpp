@@ -216,6 +216,8 @@ class Station final : public runtime::Component {
     if (host.dds) {
       replay_ = std::make_unique<StationReplay>(host.dds, options_.ring_minutes * 60.0, options_.recordings,
                                                 [this] { return tick_frame_.load(); });
+    } else {
+      started_in_process_ = true;
     }
     {
       std::lock_guard lock(publish_mutex_);
@@ -499,7 +501,12 @@ class Station final : public runtime::Component {
       return HttpResponse{404, "application/json", error_body("no picture from channel '" + channel + "' yet").dump()};
     });
     server_.handle("POST", "/api/replay", [this](const HttpRequest& r) {
-      if (!replay_) return HttpResponse{503, "application/json", error_body("the station is not connected yet").dump()};
+      if (!replay_) {
+        return HttpResponse{503, "application/json",
+                            error_body(started_in_process_ ? "a replay needs a live DDS federation (this run is in-process)"
+                                                           : "the station is not connected yet")
+                                .dump()};
+      }
       json body;
       try {
         body = json::parse(r.body);
@@ -566,6 +573,7 @@ class Station final : public runtime::Component {
   std::vector<msg::SimCommand> pending_commands_;  // from the page (publish_mutex_)
   std::vector<msg::SimCommand> sending_;           // frame thread only
   std::unique_ptr<StationReplay> replay_;  // over DDS only: built on the host's participant
+  std::atomic<bool> started_in_process_{false};
   std::thread pusher_;
   std::atomic<bool> stopping_{false};
   // The newest tick, as the frame thread left it.
