@@ -1,8 +1,9 @@
 // The DDS host of a component: one participant, a reader or writer on each of the component's
-// ports, and the frame loop that steps the component once per tick and acknowledges it.
+// ports, and the frame loop that steps the component once per tick and acknowledges it (or, for
+// the frame clock, a runtime::Driver, the loop that drives it: see run()).
 //
-// Subscribes: fedsim/frame_tick (profile "tick"), fedsim/sim_command ("command").
-// Publishes:  fedsim/frame_done ("frame_done") once per stepped frame,
+// Subscribes: fedsim/frame_tick (profile "tick"; not for a driver), fedsim/sim_command ("command").
+// Publishes:  fedsim/frame_done ("frame_done") once per stepped frame (not for a driver),
 //             fedsim/federate_status ("status") on every state change and once a second.
 //
 // Threads: DDS listener threads only record what arrived (the tick, each lockstep input's

@@ -160,6 +160,7 @@ void TimingComponent::hold_command(const msg::SimCommand& command) {
   log().info("holding command kind={} target='{}' seq={} from={} for late joiners",
              static_cast<int>(command.kind()), command.target().to_string(), command.sequence_number(),
              command.issuer().to_string());
+  std::lock_guard lock(command_write_mutex_);
   held_commands_.write(command);
 }
 
@@ -283,6 +284,7 @@ void TimingComponent::on_stop() {
     msg::SimCommand shutdown;
     shutdown.kind(msg::COMMAND_SHUTDOWN);
     shutdown.issuer(name());
+    std::lock_guard lock(command_write_mutex_);
     held_commands_.write(shutdown);
   }
 }

@@ -108,6 +108,10 @@ class TimingComponent final : public runtime::Driver {
   std::vector<std::pair<std::string, std::uint32_t>> lost_to_publish_;  // name, pid (under mutex_)
   mutable std::mutex holder_mutex_;
   runtime::SettingHolder holder_;
+  // The command port is written from a middleware thread (a setting to hold) and at the end from
+  // the frame thread (SHUTDOWN). Never taken where a write comes back to a writing path: a
+  // setting coming back is held already, SHUTDOWN is no setting.
+  std::mutex command_write_mutex_;
 };
 
 /// fedsim-timing's options and component (main.cpp, fedsim run --in-process, fedsim graph).
