@@ -32,6 +32,18 @@ void Component::report_fault(const std::string& kind, const std::string& message
   }
 }
 
+std::vector<std::string> Driver::take_notes() {
+  std::lock_guard lock(notes_mutex_);
+  std::vector<std::string> out;
+  out.swap(notes_);
+  return out;
+}
+
+void Driver::note(std::string line) {
+  std::lock_guard lock(notes_mutex_);
+  notes_.push_back(std::move(line));
+}
+
 std::string ports_json(const Component& component) {
   nlohmann::json ports = nlohmann::json::array();
   for (const auto& port : component.ports()) {

@@ -6,6 +6,10 @@
 //     frame order of a lockstep federation).
 // Nothing here creates a DDS entity; hosts bind the ports (PortBinder).
 //
+// A Driver (below) is the one component that makes frames instead of stepping in them: the
+// frame clock, fedsim-timing. The DDS host runs it on its own schedule in place of waiting for
+// ticks; the in-process host plays that part itself (Composition).
+//
 // Frame rule (both hosts): in frame N an Input holds what was written in frame N-1 (lockstep
 // inputs; in realtime over DDS, the newest sample) and an Output's samples are stamped N.
 #pragma once
@@ -14,13 +18,18 @@
 
 #include <spdlog/logger.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace fedsim::runtime {
+
+class DdsParticipant;
 
 /// What a step needs to know about the frame it computes.
 struct FrameContext {
@@ -64,6 +73,10 @@ struct PortInfo {
   bool lockstep_input = false;  // reads: frame N waits for the frame N-1 sample in lockstep
   bool monitor = false;         // reads: declared by monitors(): optional, never holds a frame
 };
+
+/// Which writer a sample came from, as far as the host can tell (over DDS the writer's instance
+/// handle; in-process all zero): enough to name the writer whose liveliness lapses later.
+using WriterId = std::array<std::uint8_t, 16>;
 
 template <class T>
 class Input;
@@ -127,9 +140,20 @@ class Input final : public PortBase {
   /// aircraft's controls on a topic keyed by aircraft). Set in the constructor, before binding;
   /// over DDS it runs on a middleware thread.
   void accept_only(std::function<bool(const T&)> accept) { accept_ = std::move(accept); }
+  /// Calls `handler` with every sample that reaches this port, as it arrives, besides keeping
+  /// the latest for the step: for what must see each sample rather than each frame's newest
+  /// (the frame clock's acknowledgements, the instructor station's view of every engine). Over
+  /// DDS on a middleware thread; in-process when the frame that wrote it ends. Set before binding.
+  using ArrivalHandler = std::function<void(const T&, const WriterId&)>;
+  void on_arrival(ArrivalHandler handler) { arrival_ = std::move(handler); }
+  /// Calls `handler` with a writer whose liveliness lapsed (a process gone or hung; over DDS
+  /// only, on a middleware thread). Set before binding.
+  void on_writer_lost(std::function<void(const WriterId&)> handler) { writer_lost_ = std::move(handler); }
 
   // Host side.
   const std::function<bool(const T&)>& acceptor() const { return accept_; }
+  const ArrivalHandler& arrival() const { return arrival_; }
+  const std::function<void(const WriterId&)>& writer_lost() const { return writer_lost_; }
   void set_writer_count(std::function<int()> count) { writers_ = std::move(count); }
   T& slot() { return value_; }
   void mark_updated() {
@@ -144,6 +168,8 @@ class Input final : public PortBase {
   std::uint64_t updates_ = 0;
   std::function<int()> writers_;
   std::function<bool(const T&)> accept_;
+  ArrivalHandler arrival_;
+  std::function<void(const WriterId&)> writer_lost_;
 };
 
 /// A write port. write() hands the sample to the host at once (the DDS writer, or the
@@ -162,15 +188,27 @@ class Output final : public PortBase {
   }
   std::uint64_t written() const { return written_; }
   std::uint64_t refused() const { return refused_; }
+  /// Readers matched to this port now (over DDS; -1 where the host does not know: in-process).
+  int readers() const { return readers_ ? readers_() : -1; }
   void bind(PortBinder& binder) override { binder.bind(*this); }
 
   // Host side.
   void set_sink(Sink sink) { sink_ = std::move(sink); }
+  void set_reader_count(std::function<int()> count) { readers_ = std::move(count); }
 
  private:
   Sink sink_;
+  std::function<int()> readers_;
   std::uint64_t written_ = 0;
   std::uint64_t refused_ = 0;
+};
+
+/// What a host offers a component besides its ports.
+struct HostServices {
+  /// The DDS participant the ports are bound to (nullptr in-process): for the rare entity a
+  /// catalogue port cannot express (the instructor station replays a recording through Fast
+  /// DDS's dynamic types).
+  std::shared_ptr<DdsParticipant> dds;
 };
 
 /// Faults a component met while stepping (numerical faults, rejected inputs...), counted by
@@ -191,6 +229,11 @@ class Component {
   const std::string& name() const { return name_; }
   const std::vector<std::unique_ptr<PortBase>>& ports() const { return ports_; }
 
+  /// Once, when a host is about to run it, before its ports are bound: acquire here what only a
+  /// running component needs (a listening socket, a database), never in the constructor, which
+  /// also builds it for `--print-ports` and `fedsim graph`. Throws to refuse to run (over DDS
+  /// the program exits 2).
+  virtual void on_start(const HostServices& host) {}
   /// Instructor commands, delivered just before the step of the frame they arrived in (never in
   /// the middle of a step). SHUTDOWN is the host's.
   virtual void on_command(const msg::SimCommand& command) {}
@@ -260,6 +303,63 @@ class Component {
   std::vector<std::unique_ptr<PortBase>> ports_;
   std::vector<FaultReport> faults_;
   std::shared_ptr<spdlog::logger> log_;
+};
+
+/// A component that makes the federation's frames rather than stepping in them: the frame clock
+/// (fedsim-timing), the writer of fedsim/frame_tick. Its ports are bound as any component's, but
+/// the DDS host (Federate::run) neither reads ticks for it nor acknowledges frames: it calls
+/// drive() on its frame thread, first once it is bound, then when the time drive() returned has
+/// come or the driver called wake() (from any thread: an acknowledgement, a status). Commands
+/// reach it on its own ports (it must act on them on arrival); SHUTDOWN, signals and
+/// on_stop() are the host's as for every component. --frames and --duration are the driver's
+/// own to count (from its first frame), not the host's.
+class Driver : public Component {
+ public:
+  using Component::Component;
+
+  /// Does what is due at `now_ns` (CLOCK_MONOTONIC) and returns the time of the next call, or
+  /// nullopt when its run is over (fail() first, if it failed).
+  virtual std::optional<std::uint64_t> drive(std::uint64_t now_ns) = 0;
+
+  /// What the host's status says of it: whether it makes frames yet, how many, how many overran.
+  struct Progress {
+    bool running = false;
+    std::uint64_t frames = 0;
+    std::uint64_t overruns = 0;
+  };
+  virtual Progress progress() const = 0;
+
+  // Host side.
+  /// The host's doorbell (set before the first drive()).
+  void set_waker(std::function<void()> wake) { waker_ = std::move(wake); }
+  /// Lines published at once in the driver's own status (fedsim run shows them), oldest first.
+  std::vector<std::string> take_notes();
+  /// Set by finish(): the run's end was a failure with this exit code and reason (0: clean).
+  int exit_code() const { return exit_code_; }
+  const std::string& failure() const { return failure_; }
+
+ protected:
+  /// Asks the host to call drive() now (any thread).
+  void wake() const {
+    if (waker_) waker_();
+  }
+  /// Queues a line for the status (any thread; published by the host's frame thread, never
+  /// under the caller's locks: a status written comes straight back to this process's reader).
+  void note(std::string line);
+  /// Makes the end of the run a failure (call before drive() returns nullopt).
+  void fail(int exit_code, std::string reason) {
+    exit_code_ = exit_code;
+    failure_ = std::move(reason);
+  }
+
+ private:
+  void step(const FrameContext&) final {}
+
+  std::function<void()> waker_;
+  std::mutex notes_mutex_;
+  std::vector<std::string> notes_;
+  int exit_code_ = 0;
+  std::string failure_;
 };
 
 /// The ports of a component as one JSON document ({"federate": name, "ports": [...]}) - what

@@ -1,23 +1,14 @@
 #include "common/runtime/composition.hpp"
 
+#include "common/runtime/frame_tick.hpp"
+#include "common/runtime/sim_command_codec.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace fedsim::runtime {
 
 namespace {
-msg::RunState to_msg(timing::RunState state) {
-  switch (state) {
-    case timing::RunState::kRun:
-      return msg::RUN_STATE_RUN;
-    case timing::RunState::kReset:
-      return msg::RUN_STATE_RESET;
-    case timing::RunState::kFreeze:
-      break;
-  }
-  return msg::RUN_STATE_FREEZE;
-}
-
 double checked_period_s(double rate_hz) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 100000.0) {
     throw std::invalid_argument("composition: frame rate " + std::to_string(rate_hz) +
@@ -29,9 +20,9 @@ double checked_period_s(double rate_hz) {
 
 Composition::Composition(Options options)
     : options_(options),
-      clock_(checked_period_s(options.rate_hz),
-             options.start_frozen ? timing::RunState::kFreeze : timing::RunState::kRun) {
-  context_.frame_period_s = clock_.frame_period_s();
+      period_s_(checked_period_s(options.rate_hz)),
+      clock_(period_s_, options.start_frozen ? timing::RunState::kFreeze : timing::RunState::kRun) {
+  context_.frame_period_s = period_s_;
   context_.mode = msg::TIMING_MODE_LOCKSTEP;
 }
 
@@ -44,6 +35,11 @@ Composition::~Composition() {
 }
 
 void Composition::add(Component& component) {
+  if (dynamic_cast<Driver*>(&component)) {
+    throw std::invalid_argument("composition: " + component.name() +
+                                " makes frames (a driver); the composition is its own frame clock");
+  }
+  component.on_start(HostServices{});
   members_.push_back(Member{&component, {}});
   bound_ = &members_.back();
   for (const auto& port : component.ports()) port->bind(*this);
@@ -55,23 +51,12 @@ void Composition::command(const msg::SimCommand& command) {
     shutdown_ = true;
     return;
   }
-  if (command.kind() == msg::COMMAND_RUN_STATE) {
-    const auto state = command.run_state();
-    clock_.request(state == msg::RUN_STATE_RUN     ? timing::RunState::kRun
-                   : state == msg::RUN_STATE_RESET ? timing::RunState::kReset
-                                                   : timing::RunState::kFreeze);
-  }
+  if (command.kind() == msg::COMMAND_RUN_STATE) clock_.request(from_msg(command.run_state()));
   commands_.push_back(command);
 }
 
 const FrameContext& Composition::step_frame() {
-  const timing::TickFields tick = clock_.next_tick();
-  context_.frame = tick.frame;
-  context_.sim_frame = tick.sim_frame;
-  context_.sim_time_s = tick.sim_time_s;
-  context_.dt_s = tick.dt_s;
-  context_.run_state = to_msg(tick.state);
-  context_.reset_count = tick.reset_count;
+  context_ = context_of(tick_of(clock_.next_tick(), period_s_, msg::TIMING_MODE_LOCKSTEP));
   commands_now_.swap(commands_);
   commands_.clear();
   for (Member& member : members_) {
@@ -117,7 +102,17 @@ std::vector<std::string> Composition::unread_topics() const {
 std::vector<std::string> Composition::unwritten_topics() const {
   std::vector<std::string> out;
   for (const auto& [name, channel] : channels_) {
-    if (channel->writers == 0 && channel->readers > 0) out.push_back(name);
+    if (channel->writers == 0 && channel->readers > channel->monitors) out.push_back(name);
+  }
+  return out;
+}
+
+std::vector<std::string> Composition::unwritten_monitored_topics() const {
+  std::vector<std::string> out;
+  for (const auto& [name, channel] : channels_) {
+    if (channel->writers == 0 && channel->readers > 0 && channel->readers == channel->monitors) {
+      out.push_back(name);
+    }
   }
   return out;
 }

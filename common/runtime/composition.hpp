@@ -3,8 +3,9 @@
 // was written in frame N-1 (the newest sample of the topic, as a DDS reader's latest_before(N)
 // gives it) and its writes become visible at frame N+1, so a scenario composed in-process and
 // flown as a DDS lockstep federation computes the same numbers. Ticks come from the same run
-// control as fedsim-timing's (common/frame_clock), commands are delivered before the step of
-// the next frame, as the runtime delivers them.
+// control as fedsim-timing's (common/frame_clock) and are built as its ticks are
+// (frame_tick.hpp); commands are delivered before the step of the next frame, as the runtime
+// delivers them. The composition is its own frame clock: a Driver cannot be added.
 //
 // Uses: closed-loop tests, Monte Carlo runs, the batch program fedsim-fly, `fedsim run
 // --in-process`. Components step in the order added; the order cannot change a result.
@@ -33,7 +34,8 @@ class Composition final : private PortBinder {
   Composition(const Composition&) = delete;
   Composition& operator=(const Composition&) = delete;
 
-  /// Adds a component (not owned; it must outlive the composition) and binds its ports.
+  /// Adds a component (not owned; it must outlive the composition): starts it
+  /// (Component::on_start, which may throw: then it is not added) and binds its ports.
   void add(Component& component);
   /// Calls `tap` with every sample written on `topic`, in the order written (recorders).
   template <class T>
@@ -57,9 +59,11 @@ class Composition final : private PortBinder {
   const FrameContext& last_frame() const { return context_; }
   /// Total faults the components reported.
   std::uint64_t fault_count() const;
-  /// Topics written by some component and read by none, and read by some and written by none.
+  /// Topics written by some component and read by none, read by some (not only monitored)
+  /// and written by none, and only monitored and written by none.
   std::vector<std::string> unread_topics() const;
   std::vector<std::string> unwritten_topics() const;
+  std::vector<std::string> unwritten_monitored_topics() const;
 
  private:
   struct ChannelBase {
@@ -67,16 +71,21 @@ class Composition final : private PortBinder {
     virtual void end_frame() = 0;
     const TopicInfo* topic = nullptr;
     int writers = 0;
-    int readers = 0;
+    int readers = 0;   // every reader, monitors included
+    int monitors = 0;  // of which monitors (optional: never missed)
   };
   template <class T>
   struct Channel final : ChannelBase {
     std::vector<T> previous;  // written in the last frame: what this frame reads
     std::vector<T> current;   // written in this frame
     std::vector<std::function<void(const T&)>> taps;
+    std::vector<std::function<void(const T&)>> arrivals;  // Input::on_arrival of its readers
     void end_frame() override {
       previous.swap(current);
       current.clear();
+      for (const T& sample : previous) {
+        for (const auto& arrive : arrivals) arrive(sample);
+      }
     }
   };
 
@@ -96,7 +105,13 @@ class Composition final : private PortBinder {
   void bind_input(Input<T>& port) {
     Channel<T>& c = channel<T>(*port.info().topic);
     ++c.readers;
+    if (port.info().monitor) ++c.monitors;
     port.set_writer_count([&c] { return c.writers; });
+    if (port.arrival()) {
+      c.arrivals.push_back([&port](const T& sample) {
+        if (!port.acceptor() || port.acceptor()(sample)) port.arrival()(sample, WriterId{});
+      });
+    }
     bound_->refreshers.push_back([&c, &port] {
       // The last sample of the previous frame the port accepts (Input::accept_only).
       for (auto it = c.previous.rbegin(); it != c.previous.rend(); ++it) {
@@ -130,6 +145,7 @@ class Composition final : private PortBinder {
   };
 
   Options options_;
+  double period_s_;
   timing::RunControl clock_;
   std::vector<Member> members_;
   Member* bound_ = nullptr;  // the member whose ports are being bound

@@ -1,6 +1,7 @@
 #include "common/runtime/federate.hpp"
 
 #include "common/runtime/command_settings.hpp"
+#include "common/runtime/frame_tick.hpp"
 #include "common/runtime/log.hpp"
 #include "common/runtime/shutdown.hpp"
 #include "common/frame_clock/silence_watch.hpp"
@@ -24,17 +25,10 @@ std::string host_name() {
   return buf;
 }
 
-FrameContext context_of(const msg::FrameTick& tick) {
-  FrameContext ctx;
-  ctx.frame = tick.frame();
-  ctx.sim_frame = tick.sim_frame();
-  ctx.sim_time_s = tick.sim_time_s();
-  ctx.dt_s = tick.dt_s();
-  ctx.frame_period_s = tick.frame_period_s();
-  ctx.run_state = tick.run_state();
-  ctx.reset_count = tick.reset_count();
-  ctx.mode = tick.mode();
-  return ctx;
+WriterId writer_id(const eprosima::fastrtps::rtps::InstanceHandle_t& handle) {
+  WriterId id{};
+  for (std::size_t i = 0; i < id.size(); ++i) id[i] = handle.value[i];
+  return id;
 }
 
 /// A step function as a component without ports (tools).
@@ -87,9 +81,20 @@ class Federate::PortBindings final : public PortBinder {
   void bind_input(Input<T>& port) {
     const Topic<T> topic{*port.info().topic};
     const bool lockstep = port.info().lockstep_input && Stamped<T>;
-    Subscription<T>& sub = federate_.subscribe(topic, port.info().qos, lockstep);
+    typename Subscription<T>::SampleHandler on_sample;
+    if (port.arrival()) {
+      on_sample = [&arrival = port.arrival()](const T& sample, const fdds::SampleInfo& info) {
+        arrival(sample, writer_id(info.publication_handle));
+      };
+    }
+    Subscription<T>& sub = federate_.subscribe(topic, port.info().qos, lockstep, std::move(on_sample));
     port.set_writer_count([&sub] { return sub.matched_writers(); });
     if (port.acceptor()) sub.set_filter(port.acceptor());
+    if (port.writer_lost()) {
+      sub.set_liveliness_handler([&lost = port.writer_lost()](const fdds::LivelinessChangedStatus& status) {
+        if (status.not_alive_count_change > 0) lost(writer_id(status.last_publication_handle));
+      });
+    }
     if constexpr (Stamped<T>) {
       refreshers_.push_back([&sub, &port, last = std::int64_t{-1}](std::uint64_t frame) mutable {
         if (!sub.latest_before(frame, port.slot())) return false;
@@ -147,6 +152,7 @@ class Federate::PortBindings final : public PortBinder {
   void bind_output(Output<T>& port) {
     Publisher<T>& pub = federate_.publish(Topic<T>{*port.info().topic}, port.info().qos);
     port.set_sink([&pub](const T& sample) { return pub.publish(sample); });
+    port.set_reader_count([&pub] { return pub.matched_readers(); });
   }
 
   /// The lockstep input registered for a topic (nullptr if it is not one).
@@ -172,13 +178,7 @@ Federate::Federate(const FederateOptions& options) : options_(options) {
   options_.dds.name = options_.name;
   dds_ = DdsParticipant::create(options_.dds);
   done_sample_.federate(options_.name);
-  const std::string sync = options_.sync_qos_suffix;
-  frame_done_pub_ = std::make_unique<Publisher<msg::FrameDone>>(
-      dds_, topics::frame_done, topics::frame_done.info.default_qos + sync);
   status_pub_ = std::make_unique<Publisher<msg::FederateStatus>>(dds_, topics::federate_status);
-  tick_sub_ = std::make_unique<Subscription<msg::FrameTick>>(
-      dds_, topics::frame_tick, topics::frame_tick.info.default_qos + sync,
-      [this](const msg::FrameTick& tick, const auto&) { handle_tick(tick); });
   command_sub_ = std::make_unique<Subscription<msg::SimCommand>>(
       dds_, topics::sim_command, qos::kCommand,
       // A setting comes twice, the original and the command holder's copy (command_settings.hpp):
@@ -240,6 +240,7 @@ void Federate::handle_command(const msg::SimCommand& command) {
     stop("shutdown command from " + command.issuer().to_string());
     return;
   }
+  if (driving_.load()) return;
   std::lock_guard lock(command_mutex_);
   commands_.push_back(command);
 }
@@ -458,21 +459,100 @@ int Federate::run(StepFunction step) {
   return run(component);
 }
 
+// The tick reader and the acknowledgement writer: a component's, not a driver's.
+void Federate::follow_ticks() {
+  const std::string sync = options_.sync_qos_suffix;
+  frame_done_pub_ = std::make_unique<Publisher<msg::FrameDone>>(
+      dds_, topics::frame_done, topics::frame_done.info.default_qos + sync);
+  tick_sub_ = std::make_unique<Subscription<msg::FrameTick>>(
+      dds_, topics::frame_tick, topics::frame_tick.info.default_qos + sync,
+      [this](const msg::FrameTick& tick, const auto&) { handle_tick(tick); });
+}
+
 int Federate::run(Component& component) {
   component_ = &component;
   component.set_logger(log_);
+  component.on_start(HostServices{dds_});
+  auto* driver = dynamic_cast<Driver*>(&component);
+  driving_.store(driver != nullptr);
+  if (!driver) follow_ticks();
   bindings_ = std::make_unique<PortBindings>(*this);
   for (const auto& port : component.ports()) port->bind(*bindings_);
-  wait_for_inputs_to_match();
-  {
-    std::lock_guard lock(frame_mutex_);
-    accepting_ticks_ = true;
+  if (driver) {
+    driver->set_waker([this] { frame_bell_.ring(); });
+    publish_status(msg::FEDERATE_READY, "");
+    log_->info("ready ports={} (driving the frames)", component.ports().size());
+    drive_loop(*driver);
+  } else {
+    wait_for_inputs_to_match();
+    {
+      std::lock_guard lock(frame_mutex_);
+      accepting_ticks_ = true;
+    }
+    publish_status(msg::FEDERATE_READY, "");
+    log_->info("ready ports={}", component.ports().size());
+    frame_loop();
   }
-  publish_status(msg::FEDERATE_READY, "");
-  log_->info("ready ports={}", component.ports().size());
-  frame_loop();
   finish();
   return exit_code_.load();
+}
+
+void Federate::publish_driver_notes(Driver& driver) {
+  const Driver::Progress progress = driver.progress();
+  {
+    std::lock_guard lock(frame_mutex_);
+    stats_.frames = progress.frames;
+    stats_.overruns = progress.overruns;
+  }
+  for (const auto& line : driver.take_notes()) publish_status(msg::FEDERATE_RUNNING, line);
+}
+
+// Frame thread: SIGINT/SIGTERM stop the loop.
+bool Federate::stopped_by_signal() {
+  if (!shutdown_requested()) return false;
+  stop(shutdown_signal() ? "signal " + std::to_string(shutdown_signal()) : "shutdown");
+  return true;
+}
+
+// The frame thread of a driver: drive() when it asked to be, or when it rang; the status as for
+// every federate (RUNNING once it makes frames, then once a second with its frame count).
+void Federate::drive_loop(Driver& driver) {
+  auto next_status = std::chrono::steady_clock::now() + kStatusPeriod;
+  bool announced_running = false;
+  while (!stop_requested_.load()) {
+    if (stopped_by_signal()) break;
+    const std::uint32_t rang = frame_bell_.value();  // before driving: no wake-up is lost
+    std::optional<std::uint64_t> next;
+    try {
+      next = driver.drive(util::monotonic_ns());
+    } catch (const std::exception& e) {
+      log_->error("drive failed: {}", e.what());
+      fail(std::string("drive failed: ") + e.what());
+      break;
+    }
+    if (!announced_running && driver.progress().running) {
+      announced_running = true;
+      publish_status(msg::FEDERATE_RUNNING, "");
+    }
+    publish_driver_notes(driver);
+    if (!next) {
+      if (driver.exit_code() != 0) exit_code_.store(driver.exit_code());
+      stop(driver.failure().empty() ? "done" : driver.failure());
+      break;
+    }
+    if (std::chrono::steady_clock::now() >= next_status) {
+      next_status += kStatusPeriod;
+      publish_status(announced_running ? msg::FEDERATE_RUNNING : msg::FEDERATE_READY, "");
+    }
+    const std::uint64_t now = util::monotonic_ns();
+    if (*next > now) {
+      const auto until_status = std::chrono::duration_cast<std::chrono::nanoseconds>(
+          next_status - std::chrono::steady_clock::now());
+      frame_bell_.wait(rang, std::max(std::chrono::nanoseconds(0),
+                                      std::min(std::chrono::nanoseconds(*next - now), until_status)));
+    }
+  }
+  publish_driver_notes(driver);
 }
 
 // Frame thread, between frames: the tick watchdog (Component::tick_watchdog_periods). Returns
@@ -510,10 +590,7 @@ void Federate::frame_loop() {
   auto next_status = std::chrono::steady_clock::now() + kStatusPeriod;
   bool announced_running = false;
   while (!stop_requested_.load()) {
-    if (shutdown_requested()) {
-      stop(shutdown_signal() ? "signal " + std::to_string(shutdown_signal()) : "shutdown");
-      break;
-    }
+    if (stopped_by_signal()) break;
     if (deadline_ns != 0 && util::monotonic_ns() >= deadline_ns) {
       stop("duration of " + std::to_string(options_.duration_s) + " s reached");
       break;
@@ -568,7 +645,7 @@ void Federate::finish() {
     std::lock_guard lock(frame_mutex_);
     stopping_ = true;
   }
-  tick_sub_->close();  // no tick is taken after this
+  if (tick_sub_) tick_sub_->close();  // no tick is taken after this
   command_sub_->close();
   std::string reason;
   {
@@ -599,7 +676,7 @@ void Federate::finish() {
   publish_status(exit_code_.load() == 0 ? msg::FEDERATE_STOPPING : msg::FEDERATE_FAILED, reason);
   // No lost samples: every reliable writer waits until its readers acknowledged.
   for (auto& flush : flushers_) flush();
-  frame_done_pub_->wait_for_acknowledgments(std::chrono::seconds(1));
+  if (frame_done_pub_) frame_done_pub_->wait_for_acknowledgments(std::chrono::seconds(1));
   status_pub_->wait_for_acknowledgments(std::chrono::seconds(1));
 }
 

@@ -1,8 +1,9 @@
 // The DDS host of a component: one participant, a reader or writer on each of the component's
-// ports, and the frame loop that steps the component once per tick and acknowledges it.
+// ports, and the frame loop that steps the component once per tick and acknowledges it (or, for
+// the frame clock, a runtime::Driver, the loop that drives it: see run()).
 //
-// Subscribes: fedsim/frame_tick (profile "tick"), fedsim/sim_command ("command").
-// Publishes:  fedsim/frame_done ("frame_done") once per stepped frame,
+// Subscribes: fedsim/frame_tick (profile "tick"; not for a driver), fedsim/sim_command ("command").
+// Publishes:  fedsim/frame_done ("frame_done") once per stepped frame (not for a driver),
 //             fedsim/federate_status ("status") on every state change and once a second.
 //
 // Threads: DDS listener threads only record what arrived (the tick, each lockstep input's
@@ -73,7 +74,9 @@ class Federate {
 
   /// Runs `component` (its ports bound to DDS readers and writers) until SIGINT/SIGTERM, a
   /// SHUTDOWN command, --duration or --frames. Returns the process exit code: 0 clean stop,
-  /// 1 the step failed or the component reported faults.
+  /// 1 the step failed or the component reported faults. A Driver (component.hpp) is driven
+  /// on this thread instead: no tick is read and no frame acknowledged; its run ends when
+  /// drive() says so (its exit code then), on a signal or on a SHUTDOWN command.
   int run(Component& component);
   /// Runs a bare step function (tools whose readers are not ports, e.g. the recorder).
   int run(StepFunction step);
@@ -90,9 +93,11 @@ class Federate {
     flushers_.push_back([p = pub.get()] { p->wait_for_acknowledgments(std::chrono::seconds(1)); });
     return *pub;
   }
+  /// `on_sample` (optional) is called with every sample, on a middleware thread.
   template <class T>
   Subscription<T>& subscribe(const Topic<T>& topic, std::string_view qos = {},
-                             bool lockstep_input = false);
+                             bool lockstep_input = false,
+                             typename Subscription<T>::SampleHandler on_sample = {});
 
   /// Commands (other than SHUTDOWN, which the runtime handles) are delivered on the frame
   /// thread just before the step (run(StepFunction) only; a component has on_command).
@@ -143,7 +148,11 @@ class Federate {
   void publish_done(std::uint64_t frame, float compute_us, std::uint64_t latency_ns);
   void publish_status(msg::FederateState state, const std::string& message);
   void wait_for_inputs_to_match();
+  void follow_ticks();
   void frame_loop();
+  void drive_loop(Driver& driver);
+  bool stopped_by_signal();
+  void publish_driver_notes(Driver& driver);
   std::chrono::nanoseconds watch_ticks();
   void finish();
   double input_timeout_s(const msg::FrameTick& tick) const;
@@ -154,8 +163,9 @@ class Federate {
   std::vector<std::shared_ptr<void>> endpoints_;   // user publishers/subscriptions
   std::vector<std::function<void()>> flushers_;    // wait for acknowledgements at stop
 
-  std::unique_ptr<Publisher<msg::FrameDone>> frame_done_pub_;
   std::unique_ptr<Publisher<msg::FederateStatus>> status_pub_;
+  // A component's, created by run() (a driver has neither: it writes the ticks).
+  std::unique_ptr<Publisher<msg::FrameDone>> frame_done_pub_;
   std::unique_ptr<Subscription<msg::FrameTick>> tick_sub_;
   std::unique_ptr<Subscription<msg::SimCommand>> command_sub_;
 
@@ -194,6 +204,7 @@ class Federate {
   std::vector<msg::SimCommand> commands_now_;   // delivered this frame (swapped: no allocation)
 
   std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> driving_{false};  // running a Driver: commands reach it on its own ports
   std::atomic<int> exit_code_{0};
   std::string stop_reason_;
   std::uint64_t start_ns_ = 0;
@@ -201,9 +212,10 @@ class Federate {
 
 template <class T>
 Subscription<T>& Federate::subscribe(const Topic<T>& topic, std::string_view qos,
-                                     bool lockstep_input) {
+                                     bool lockstep_input,
+                                     typename Subscription<T>::SampleHandler on_sample) {
   if (!lockstep_input) {
-    auto sub = std::make_shared<Subscription<T>>(dds_, topic, qos);
+    auto sub = std::make_shared<Subscription<T>>(dds_, topic, qos, std::move(on_sample));
     endpoints_.push_back(sub);
     return *sub;
   }
@@ -211,8 +223,10 @@ Subscription<T>& Federate::subscribe(const Topic<T>& topic, std::string_view qos
     auto input = std::make_shared<LockstepInput>();
     input->topic = topic.name();
     auto sub = std::make_shared<Subscription<T>>(
-        dds_, topic, qos, [this, in = input.get()](const T& sample, const auto&) {
+        dds_, topic, qos,
+        [this, in = input.get(), also = std::move(on_sample)](const T& sample, const auto& info) {
           on_lockstep_input(*in, sample.stamp().frame());
+          if (also) also(sample, info);
         });
     input->matched_writers = [s = sub.get()] { return s->matched_writers(); };
     input->read_reliably = [s = sub.get(), dds = dds_.get()] {

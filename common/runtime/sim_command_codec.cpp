@@ -97,6 +97,12 @@ msg::RunState to_msg(timing::RunState s) {
   return msg::RUN_STATE_FREEZE;
 }
 
+timing::RunState from_msg(msg::RunState s) {
+  return s == msg::RUN_STATE_RUN ? timing::RunState::kRun
+         : s == msg::RUN_STATE_RESET ? timing::RunState::kReset
+                                     : timing::RunState::kFreeze;
+}
+
 msg::SimCommand to_sim_command(const InstructorRequest& request) {
   msg::SimCommand c;
   std::visit(Encode{c}, request);
@@ -106,9 +112,7 @@ msg::SimCommand to_sim_command(const InstructorRequest& request) {
 std::optional<InstructorRequest> from_sim_command(const msg::SimCommand& c) {
   switch (c.kind()) {
     case msg::COMMAND_RUN_STATE:
-      return RunStateRequest{c.run_state() == msg::RUN_STATE_RUN      ? RunState::kRun
-                             : c.run_state() == msg::RUN_STATE_RESET  ? RunState::kReset
-                                                                      : RunState::kFreeze};
+      return RunStateRequest{from_msg(c.run_state())};
     case msg::COMMAND_REPOSITION: {
       const auto& m = c.reposition();
       RepositionRequest r;

@@ -13,6 +13,8 @@ namespace fedsim::runtime {
 
 /// The IDL run state of the frame clock's (the tick and the command carry the same three).
 msg::RunState to_msg(timing::RunState state);
+/// And back (a state this build does not know is FREEZE: the safe one).
+timing::RunState from_msg(msg::RunState state);
 
 /// The sample for `request` (kind, target and payload; issuer and sequence number left to the
 /// sender). A snapshot request is stamped with the sender's CLOCK_REALTIME now.

@@ -89,9 +89,10 @@ outdir="$1"; shift
 command -v openssl >/dev/null || fail "openssl not found (Debian package openssl)"
 
 # identities_of_deployment FILE: the NAME:GRANTS a `fedsim run FILE` needs, read from the text
-# `fedsim graph` prints ("  NAME (BINARY ...)" per federate, "    writes TOPIC ..." per port).
-# fedsim/sim_command belongs to the runtime's backbone, which the graph does not list: its
-# writers are known by program (tools/fedsim/launcher.cpp, federates/ios, federates/scenario).
+# `fedsim graph` prints ("  NAME (BINARY ...)" per federate, the timing federate included,
+# "    writes TOPIC ..." per port, up to "data flow:"): a writer of the protected controls gets
+# "controls", a writer of fedsim/sim_command (the timing federate's command holder, the
+# instructor station, a scenario) gets "command".
 identities_of_deployment() {
   local fedsim="${FEDSIM_BIN:-}"
   if [[ -z "$fedsim" ]]; then
@@ -107,18 +108,20 @@ identities_of_deployment() {
       if (name == "") return
       g = ""
       if (writes_controls) g = "controls"
-      if (binary == "fedsim-ios" || binary == "fedsim-scenario") g = (g == "" ? "" : g ",") "command"
+      if (writes_commands) g = (g == "" ? "" : g ",") "command"
       print (g == "" ? name : name ":" g)
       if (binary == "fedsim record") print name "-data:readonly"  # its second participant
+      name = ""
     }
+    done { next }
+    /^data flow:/ { flush(); done = 1; next }
     /^  [^ ].* \(.*\)$/ {
       flush(); name = $1; binary = $0; sub(/^[^(]*\(/, "", binary); sub(/\)$/, "", binary)
-      writes_controls = 0; next
+      writes_controls = 0; writes_commands = 0; next
     }
-    /^    writes / { if ($2 == controls) writes_controls = 1; next }
-    /^[^ ]/ { flush(); name = "" }
+    /^    writes / { if ($2 == controls) writes_controls = 1; if ($2 == "fedsim/sim_command") writes_commands = 1; next }
+    /^[^ ]/ { flush() }
     END { flush() }' <<<"$graph"
-  [[ "$graph" == *"(and fedsim-timing:"* ]] && echo "timing:command"
   echo "fedsim-run:readonly"
 }
 

@@ -3,15 +3,13 @@
 
 #include "common/instructor/request_json.hpp"
 #include "common/navdb/nav_database.hpp"
-#include "common/runtime/federate.hpp"
-#include "common/runtime/shutdown.hpp"
 #include "common/runtime/sim_command_codec.hpp"
-#include "common/runtime/subscription.hpp"
+#include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
+#include "ios/model/access_policy.hpp"
 #include "ios/model/command_tracker.hpp"
 #include "ios/model/live_fields.hpp"
 #include "ios/model/map_layers.hpp"
-#include "ios/station_ports.hpp"
 #include "ios/station_replay.hpp"
 #include "ios/station_scenario.hpp"
 #include "common/util/config_node.hpp"
@@ -21,6 +19,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -86,20 +85,14 @@ struct Shared {
   }
 };
 
-/// Takes the samples of one catalogue topic into the registry, flattened as the recorder
+/// Takes the samples a monitor port receives into the registry, flattened as the recorder
 /// flattens them, at most a few times a second (RateGate).
 template <class T>
-class TopicTap {
+class FieldTap {
  public:
-  TopicTap(const std::shared_ptr<runtime::DdsParticipant>& dds, const runtime::Topic<T>& topic, Shared& shared,
-           double period_s)
-      : topic_name_(topic.name()), shared_(shared), gate_(period_s), flattener_(topic) {
-    subscription_ = std::make_unique<runtime::Subscription<T>>(
-        dds, topic, runtime::qos::kState, [this](const T& sample, const auto&) { take(sample); });
-  }
-  ~TopicTap() { subscription_.reset(); }  // no callback after this
+  FieldTap(const runtime::Topic<T>& topic, Shared& shared, double period_s)
+      : topic_name_(topic.name()), shared_(shared), gate_(period_s), flattener_(topic) {}
 
- private:
   void take(const T& sample) {
     std::lock_guard tap_lock(tap_mutex_);
     const double now = clock_s();
@@ -115,12 +108,13 @@ class TopicTap {
     shared_.fields.update(instance, flattener_.names(), cells, now);
   }
 
+
+ private:
   std::string topic_name_;
   Shared& shared_;
   RateGate gate_;
   std::mutex tap_mutex_;
   tools::TypedFlattener<T> flattener_;
-  std::unique_ptr<runtime::Subscription<T>> subscription_;
 };
 
 const char* federate_state_name(int s) {
@@ -190,44 +184,59 @@ std::string state_message(Shared& s, double now_s, const ServerStatistics& serve
 
 json error_body(const std::string& what) { return json{{"error", what}}; }
 
-/// The station: the federate, its readers and writer, the server and the pusher.
-class Station {
+/// The station: its ports, the server and the pusher.
+class Station final : public runtime::Component {
  public:
   explicit Station(const StationOptions& options)
-      : options_(options),
-        db_(nav::NavDatabase::open(options.navdb_file.empty() ? nav::default_database_path() : options.navdb_file)),
+      : Component(options.federate.name),
+        options_(options),
         server_(options.server),
         scenario_(options.scenarios.empty() ? std::filesystem::path(fedsim::util::data_dir()) / "scenarios"
-                                            : std::filesystem::path(options.scenarios)) {
+                                            : std::filesystem::path(options.scenarios)),
+        commands_(writes(runtime::topics::sim_command)),
+        replay_port_(writes(runtime::topics::replay_state)) {
+    // Before anything joins the federation: a public address without a token exits 2.
+    if (const std::string problem = bind_problem(options_.server.bind_address, options_.server.token);
+        !problem.empty()) {
+      throw ServerError(problem);
+    }
+    declare_monitors();
     register_routes();
     server_.set_greeting([this] { return current_state(); });
   }
 
-  int run() {
-    server_.start();  // before anything joins the federation: a bad port or address exits 2
+  ~Station() override { stop_serving(); }
+
+  // Over DDS the replay gets the host's participant (a recording is read back through dynamic
+  // types, which no catalogue port carries); in-process there is none, and no replay.
+  void on_start(const runtime::HostServices& host) override {
+    db_.emplace(nav::NavDatabase::open(options_.navdb_file.empty() ? nav::default_database_path() : options_.navdb_file));
+    server_.start();  // a port in use or a missing page: the station does not run
     announce();
-    runtime::Federate federate(options_.federate);
-    federate_ = &federate;
-    subscribe(federate);
-    replay_ = std::make_unique<StationReplay>(federate.dds(), options_.ring_minutes * 60.0, options_.recordings,
-                                              [this] { return tick_frame_.load(); });
-    auto& commands = federate.publish(runtime::topics::sim_command, runtime::qos::kCommand);
-    commands_ = &commands;
-    federate.on_command([this](const msg::SimCommand& c) { note_setting(c); });
-    std::thread pusher([this] { push_loop(); });
-    const int rc = federate.run([this](const runtime::FrameContext& frame) { note_frame(frame); });
-    stopping_.store(true);
-    wake_.notify_all();
-    pusher.join();
+    if (host.dds) {
+      replay_ = std::make_unique<StationReplay>(host.dds, options_.ring_minutes * 60.0, options_.recordings,
+                                                [this] { return tick_frame_.load(); });
+    } else {
+      started_in_process_ = true;
+    }
     {
       std::lock_guard lock(publish_mutex_);
-      commands_ = nullptr;  // the page can no longer send once the federate is gone
+      accepting_commands_ = true;
     }
-    server_.stop();
+    pusher_ = std::thread([this] { push_loop(); });
+  }
+
+  void on_command(const msg::SimCommand& command) override { note_setting(command); }
+
+  void step(const runtime::FrameContext& frame) override {
+    note_frame(frame);
+    send_pending_commands();
+  }
+
+  void on_stop() override {
+    stop_serving();
     replay_.reset();
-    taps_.clear();
     print_summary();
-    return rc;
   }
 
  private:
@@ -238,24 +247,40 @@ class Station {
     }
   }
 
-  template <class T>
-  void tap(runtime::Federate& federate, const runtime::Topic<T>& topic) {
-    taps_.push_back(std::make_shared<TopicTap<T>>(federate.dds(), topic, shared_, 1.0 / (2.0 * options_.push_hz)));
+  /// Stops the pusher and the page (the page can no longer send once the station stops).
+  void stop_serving() {
+    stopping_.store(true);
+    wake_.notify_all();
+    if (pusher_.joinable()) pusher_.join();
+    {
+      std::lock_guard lock(publish_mutex_);
+      accepting_commands_ = false;
+    }
+    server_.stop();
   }
 
-  void subscribe(runtime::Federate& federate) {
-    for (const StationRead& read : kStationReads) {
-      if (read.topic == runtime::topics::visual_picture.name()) {
-        taps_.push_back(std::make_shared<runtime::Subscription<msg::VisualPicture>>(
-            federate.dds(), runtime::topics::visual_picture, read.qos,
-            [this](const msg::VisualPicture& p, const auto&) { note_picture(p); }));
-        continue;
-      }
-      runtime::topics::visit(read.topic, [&](const auto& topic) { tap(federate, topic); });
-    }
-    taps_.push_back(std::make_shared<runtime::Subscription<msg::FederateStatus>>(
-        federate.dds(), runtime::topics::federate_status, runtime::qos::kStatus,
-        [this](const msg::FederateStatus& s, const auto&) { note_status(s); }));
+  template <class T>
+  void tap(const runtime::Topic<T>& topic, std::string_view qos = runtime::qos::kState) {
+    auto field_tap = std::make_shared<FieldTap<T>>(topic, shared_, 1.0 / (2.0 * options_.push_hz));
+    monitors(topic, qos).on_arrival([field_tap](const T& sample, const runtime::WriterId&) { field_tap->take(sample); });
+  }
+
+  /// The topics the page shows, read as monitors (best effort, keep last 1 where the topic
+  /// allows: they never hold a frame back), every sample as it arrives (a few a second kept).
+  void declare_monitors() {
+    namespace topics = runtime::topics;
+    tap(topics::aircraft_state);
+    tap(topics::engine_state);
+    tap(topics::navigation_state);
+    tap(topics::autopilot_state);
+    tap(topics::motion_state);
+    tap(topics::control_loading_state);
+    tap(topics::visual_status);
+    tap(topics::pilot_controls, runtime::qos::kPilotControls);  // its writer's exclusive ownership
+    monitors(topics::visual_picture, runtime::qos::kPicture)
+        .on_arrival([this](const msg::VisualPicture& p, const runtime::WriterId&) { note_picture(p); });
+    monitors(topics::federate_status, runtime::qos::kStatus)
+        .on_arrival([this](const msg::FederateStatus& s, const runtime::WriterId&) { note_status(s); });
   }
 
   // The frame thread only stores the tick (no lock: a push being built never holds a frame).
@@ -290,7 +315,7 @@ class Station {
     });
     for (const auto& a : actions) {
       if (a.kind == scenario::Action::Kind::kLog) {
-        if (federate_) federate_->log().info("scenario t={:.2f}s (line {}): {}", f.sim_time_s, a.line, a.text);
+        log().info("scenario t={:.2f}s (line {}): {}", f.sim_time_s, a.line, a.text);
         continue;
       }
       const instructor::InstructorRequest request =
@@ -318,7 +343,7 @@ class Station {
     } catch (const std::invalid_argument& e) {
       return {400, "application/json", error_body(e.what()).dump()};
     }
-    if (federate_) federate_->log().info("scenario {} started from {}", name, r.remote_address);
+    log().info("scenario {} started from {}", name, r.remote_address);
     return {200, "application/json", json{{"running", true}, {"name", name}}.dump()};
   }
 
@@ -371,7 +396,7 @@ class Station {
         const double now = clock_s();
         copy_tick_locked(now);
         for (const auto& c : shared_.tracker.update(now, shared_.lookup())) {
-          if (federate_) federate_->log().info("command {} '{}': {} ({})", c.sequence, c.text, status_name(c.status), c.evidence);
+          log().info("command {} '{}': {} ({})", c.sequence, c.text, status_name(c.status), c.evidence);
         }
         if (shared_.pushes == 0) shared_.first_push_s = now;
         shared_.last_push_s = now;
@@ -399,10 +424,24 @@ class Station {
     if (sequence_out) *sequence_out = sequence;
     {
       std::lock_guard lock(publish_mutex_);
-      if (!commands_ || !commands_->publish(sample)) return false;
+      if (!accepting_commands_) return false;
+      pending_commands_.push_back(sample);
     }
-    if (federate_) federate_->log().info("command {} from {}: {}", sequence, from, instructor::describe(command));
+    log().info("command {} from {}: {}", sequence, from, instructor::describe(command));
     return true;
+  }
+
+  /// On the frame thread: what the page and the page's scenario asked since the last frame goes
+  /// out on the command port (a host's ports are written from its frame thread).
+  void send_pending_commands() {
+    {
+      std::lock_guard lock(publish_mutex_);
+      sending_.swap(pending_commands_);
+    }
+    for (const auto& sample : sending_) {
+      if (!commands_.write(sample)) log().error("command {} was refused by the middleware", sample.sequence_number());
+    }
+    sending_.clear();
   }
 
   HttpResponse send_command(const HttpRequest& request) {
@@ -415,7 +454,7 @@ class Station {
     std::optional<ExpectedPosition> expected;
     if (const auto* r = std::get_if<instructor::RepositionRequest>(&command);
         r && r->kind != instructor::RepositionRequest::Kind::kPoint) {
-      expected = expected_position(db_, r->airport, r->runway, r->gate_distance_m);
+      expected = expected_position(*db_, r->airport, r->runway, r->gate_distance_m);
       if (!expected) {
         return {400, "application/json",
                 error_body("reposition: no runway " + r->runway + " at " + r->airport + " in the navigation database").dump()};
@@ -446,7 +485,7 @@ class Station {
         }
       }
       try {
-        return HttpResponse{200, "application/json", map_json(db_, airport, radius_nm)};
+        return HttpResponse{200, "application/json", map_json(*db_, airport, radius_nm)};
       } catch (const std::invalid_argument& e) {
         return HttpResponse{404, "application/json", error_body(e.what()).dump()};
       }
@@ -462,7 +501,12 @@ class Station {
       return HttpResponse{404, "application/json", error_body("no picture from channel '" + channel + "' yet").dump()};
     });
     server_.handle("POST", "/api/replay", [this](const HttpRequest& r) {
-      if (!replay_) return HttpResponse{503, "application/json", error_body("the station is not connected yet").dump()};
+      if (!replay_) {
+        return HttpResponse{503, "application/json",
+                            error_body(started_in_process_ ? "a replay needs a live DDS federation (this run is in-process)"
+                                                           : "the station is not connected yet")
+                                .dump()};
+      }
       json body;
       try {
         body = json::parse(r.body);
@@ -471,7 +515,7 @@ class Station {
       }
       try {
         const json reply = replay_->request(body);
-        if (federate_) federate_->log().info("replay from {}: {}", r.remote_address, body.dump());
+        log().info("replay from {}: {}", r.remote_address, body.dump());
         return HttpResponse{200, "application/json", reply.dump()};
       } catch (const std::invalid_argument& e) {
         return HttpResponse{400, "application/json", error_body(e.what()).dump()};
@@ -516,15 +560,21 @@ class Station {
   }
 
   StationOptions options_;
-  nav::NavDatabase db_;
+  std::optional<nav::NavDatabase> db_;  // opened by on_start
   WebServer server_;
   Shared shared_;
-  runtime::Federate* federate_ = nullptr;
-  std::mutex publish_mutex_;
-  runtime::Publisher<msg::SimCommand>* commands_ = nullptr;
-  std::vector<std::shared_ptr<void>> taps_;
-  std::unique_ptr<StationReplay> replay_;  // built once the federate's participant exists
   StationScenario scenario_;               // the page's scenario, run on the frame thread
+  runtime::Output<msg::SimCommand>& commands_;
+  // What a replay publishes (StationReplay writes it through its own writer on the host's
+  // participant; declared here so that --print-ports and fedsim graph show it).
+  runtime::Output<msg::AircraftState>& replay_port_;
+  std::mutex publish_mutex_;
+  bool accepting_commands_ = false;             // between on_start and on_stop (publish_mutex_)
+  std::vector<msg::SimCommand> pending_commands_;  // from the page (publish_mutex_)
+  std::vector<msg::SimCommand> sending_;           // frame thread only
+  std::unique_ptr<StationReplay> replay_;  // over DDS only: built on the host's participant
+  std::atomic<bool> started_in_process_{false};
+  std::thread pusher_;
   std::atomic<bool> stopping_{false};
   // The newest tick, as the frame thread left it.
   std::atomic<std::uint64_t> tick_frame_{0}, ticks_{0};
@@ -534,26 +584,85 @@ class Station {
   std::condition_variable wake_;
 };
 
+/// The token from a file (first line) or FEDSIM_IOS_TOKEN; never from the command line, where
+/// every user of the machine can read it (ps).
+std::string read_token(const std::string& token_file) {
+  if (!token_file.empty()) {
+    std::ifstream in(token_file);
+    if (!in) throw std::runtime_error("--token-file " + token_file + ": cannot read it");
+    std::string token;
+    std::getline(in, token);
+    while (!token.empty() && (token.back() == '\r' || token.back() == ' ')) token.pop_back();
+    if (token.empty()) throw std::runtime_error("--token-file " + token_file + ": the first line is empty");
+    return token;
+  }
+  const char* env = std::getenv("FEDSIM_IOS_TOKEN");
+  return env ? env : "";
+}
+
+/// FEDSIM_IOS_PORT gives the default port (as FEDSIM_DOMAIN gives the domain): a deployment run
+/// by a test takes any free port without editing the file.
+int port_from_environment(int fallback) {
+  const char* env = std::getenv("FEDSIM_IOS_PORT");
+  if (!env) return fallback;
+  char* end = nullptr;
+  const long port = std::strtol(env, &end, 10);
+  if (end == env || *end != '\0' || port < 0 || port > 65535) {
+    throw std::runtime_error(std::string("FEDSIM_IOS_PORT '") + env + "' is not a port number (0..65535)");
+  }
+  return static_cast<int>(port);
+}
+
 }  // namespace
 
-int run_station(const StationOptions& options) {
-  runtime::install_shutdown_handler();
-  std::unique_ptr<Station> station;
-  try {
-    station = std::make_unique<Station>(options);
-  } catch (const std::exception& e) {
-    std::cerr << "fedsim-ios: " << e.what() << "\n";
-    return 2;
-  }
-  try {
-    return station->run();
-  } catch (const ServerError& e) {
-    std::cerr << "fedsim-ios: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "fedsim-ios: " << e.what() << "\n";
-    return 1;
-  }
+runtime::FederateProgram program() {
+  struct Parsed {
+    StationOptions options;
+    std::string token_file;
+    CLI::Option* http_port = nullptr;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  parsed->options.server.web_root = fedsim::util::source_dir() + "/federates/ios/web";
+  runtime::FederateProgram p;
+  p.program = "fedsim-ios";
+  p.default_name = "ios";
+  p.description = "the instructor station: a web page (map, plots, instruments, channel pictures, federation, "
+                  "commands) served on 127.0.0.1";
+  p.add_options = [parsed](CLI::App& app) {
+    StationOptions& o = parsed->options;
+    parsed->http_port =
+        app.add_option("--http-port", o.server.port, "TCP port of the page (0 = any free port; default FEDSIM_IOS_PORT or 8470)")
+            ->check(util::FiniteRange(0, 65535))
+            ->capture_default_str();
+    app.add_option("--bind", o.server.bind_address,
+                   "address to listen on; anything but loopback needs --token-file or FEDSIM_IOS_TOKEN")
+        ->capture_default_str();
+    app.add_option("--token-file", parsed->token_file, "file whose first line is the access token (>= 16 characters)");
+    app.add_option("--port-file", o.port_file, "write the port to this file once listening");
+    app.add_option("--push-hz", o.push_hz, "pushes of the live state to the page per second")
+        ->check(util::FiniteRange(1.0, 60.0))
+        ->capture_default_str();
+    app.add_option("--airport", o.airport, "the map's airport (ICAO ident)")->capture_default_str();
+    app.add_option("--map-radius-nm", o.map_radius_nm, "navaids within this distance of the airport [NM]")
+        ->check(util::FiniteRange(1.0, 200.0))
+        ->capture_default_str();
+    app.add_option("--ring-minutes", o.ring_minutes, "live aircraft state kept for replay [min]")
+        ->check(util::FiniteRange(0.5, 120.0))
+        ->capture_default_str();
+    app.add_option("--recordings", o.recordings, "folder of recordings the page may replay (fedsim record / fedsim run --out)")
+        ->capture_default_str();
+    app.add_option("--scenarios", o.scenarios, "folder of scenario files the page may run (default: data/scenarios)");
+    app.add_option("--navdb", o.navdb_file, "navigation database (default: the one the build made)");
+    app.add_option("--web-root", o.server.web_root, "folder of the page's files")->capture_default_str();
+  };
+  p.make_component = [parsed](const runtime::FederateOptions& common) {
+    StationOptions o = parsed->options;
+    o.federate = common;
+    if (parsed->http_port == nullptr || parsed->http_port->count() == 0) o.server.port = port_from_environment(o.server.port);
+    o.server.token = read_token(parsed->token_file);
+    return std::unique_ptr<runtime::Component>(std::make_unique<Station>(o));
+  };
+  return p;
 }
 
 }  // namespace fedsim::ios

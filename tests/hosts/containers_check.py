@@ -106,7 +106,7 @@ class Checker:
         if argv[0].startswith("fedsim-") and "--print-ports" in known:
             local = [prog] + [self.local_path(w) for w in argv[1:]] + ["--print-ports"]
             r = subprocess.run(local, capture_output=True, text=True, timeout=60,
-                               env={**os.environ, "FEDSIM_IOS_TOKEN": "check"})
+                               env={**os.environ, "FEDSIM_IOS_TOKEN": "containers-check-token"})
             if r.returncode != 0:
                 self.error(where, f"'{' '.join(argv)} --print-ports' failed: {(r.stderr or r.stdout).strip()[-300:]}")
 

@@ -3,9 +3,8 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/util/config_node.hpp"
-#include "fedsim/in_process.hpp"
 #include "fedsim/launcher.hpp"
-#include "ios/station_ports.hpp"
+#include "fedsim/members.hpp"
 
 #include <fastrtps/attributes/PublisherAttributes.h>
 #include <fastrtps/attributes/SubscriberAttributes.h>
@@ -27,61 +26,22 @@ namespace fedsim::launcher {
 namespace {
 
 constexpr const char* kWritersQos = "(writer's)";
-
-void parse_args(CLI::App& app, const std::vector<std::string>& args) {
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  app.parse(reversed);
-}
+constexpr const char* kEveryFederate = "(every federate)";
 
 /// A `fedsim record` member reads its topics with its writers' QoS.
-GraphNode recorder_node(const FederateSpec& f, const std::vector<std::string>& args) {
-  GraphNode node{f.name, "fedsim " + (args.empty() ? std::string() : args.front()), {}, false};
-  if (args.empty() || args.front() != "record") return node;
-  std::string topics;
-  CLI::App app{"record"};
-  app.allow_extras();
-  app.add_option("--topics", topics);
-  parse_args(app, std::vector<std::string>(args.begin() + 1, args.end()));
-  std::stringstream in(topics);
-  for (std::string t; std::getline(in, t, ',');) {
-    if (!t.empty()) node.ports.push_back({t, runtime::PortDirection::kRead, kWritersQos, true});
-  }
+GraphNode recorder_node(const Member& m) {
+  GraphNode node{m.spec->name, "fedsim " + (m.args.empty() ? std::string() : m.args.front()), {}, false};
+  const auto recorder = recorder_of(m);
+  if (!recorder) return node;
+  for (const auto& t : recorder->topics) node.ports.push_back({t, runtime::PortDirection::kRead, kWritersQos, true});
   node.ports_known = true;
   return node;
 }
 
-/// The instructor station reads the state topics (without holding a frame) and the pictures.
-GraphNode station_node(const FederateSpec& f) {
-  GraphNode node{f.name, "fedsim-ios", {}, true};
-  for (const ios::StationRead& read : ios::kStationReads) {
-    GraphNode::Port port{std::string(read.topic), runtime::PortDirection::kRead, std::string(read.qos), false};
-    port.monitor = true;
-    node.ports.push_back(port);
-  }
-  for (const ios::StationRead& write : ios::kStationWrites) {
-    node.ports.push_back({std::string(write.topic), runtime::PortDirection::kWrite, std::string(write.qos), false});
-  }
-  return node;
-}
-
-GraphNode component_node(const FederateSpec& f, const std::vector<std::string>& args,
-                         const std::string& file) {
-  const std::string binary = fs::path(f.binary).filename().string();
-  const auto it = component_programs().find(binary);
-  if (it == component_programs().end()) return {f.name, binary, {}, false};
-  runtime::FederateProgram program = it->second();
-  runtime::FederateOptions common;
-  CLI::App app{program.program};
-  runtime::add_federate_options(app, common, f.name);
-  program.add_options(app);
-  try {
-    parse_args(app, args);
-  } catch (const CLI::ParseError& e) {
-    throw util::ConfigError(file + ": federate '" + f.name + "': " + e.what());
-  }
-  common.name = f.name;
-  const auto component = program.make_component(common);
-  GraphNode node{f.name, binary, {}, true};
+GraphNode component_node(const Deployment& d, const Member& m) {
+  const auto component = build_component(d, m);
+  if (!component) return {m.spec->name, m.binary, {}, false};
+  GraphNode node{m.spec->name, m.binary, {}, true};
   for (const auto& port : component->ports()) {
     const runtime::PortInfo& p = port->info();
     GraphNode::Port out{p.topic->name, p.direction, p.qos, p.lockstep_input};
@@ -89,6 +49,24 @@ GraphNode component_node(const FederateSpec& f, const std::vector<std::string>& 
                   (p.monitor || (p.topic->lockstep_input && !p.lockstep_input));
     node.ports.push_back(out);
   }
+  return node;
+}
+
+/// The backbone ports the runtime gives every federate it hosts (runtime::Federate): it reads
+/// the tick and the commands, and writes the acknowledgement and the status. One node stands
+/// for all of them, so that the frame clock's and the station's backbone ports have their other
+/// side. Its reads are monitors: with no clock in the deployment, nothing is missing for them.
+GraphNode every_federate(const std::string& sync_suffix) {
+  using runtime::PortDirection;
+  namespace topics = runtime::topics;
+  namespace qos = runtime::qos;
+  GraphNode node{kEveryFederate, "the runtime", {}, true};
+  node.host = true;
+  node.ports.push_back({topics::frame_tick.name(), PortDirection::kRead, std::string(qos::kTick) + sync_suffix});
+  node.ports.push_back({topics::sim_command.name(), PortDirection::kRead, std::string(qos::kCommand)});
+  node.ports.push_back({topics::frame_done.name(), PortDirection::kWrite, std::string(qos::kFrameDone) + sync_suffix});
+  node.ports.push_back({topics::federate_status.name(), PortDirection::kWrite, std::string(qos::kStatus)});
+  for (auto& port : node.ports) port.monitor = port.direction == PortDirection::kRead;
   return node;
 }
 
@@ -157,7 +135,8 @@ void check(DataFlowGraph& graph, const QosProfiles& qos, bool lockstep) {
     }
     if (use.readers.empty()) graph.notes.push_back(topic + " is written and read by nobody here");
     const runtime::TopicInfo* info = runtime::topics::find(topic);
-    const bool per_writer = info != nullptr && info->instance_per_writer;
+    // The backbone has a writer per federate (status) or per instructor tool (commands).
+    const bool per_writer = info != nullptr && (info->instance_per_writer || runtime::topics::is_backbone(topic));
     if (use.writers.size() > 1 && !per_writer) {
       std::string names;
       for (const auto& [writer, port] : use.writers) names += (names.empty() ? "" : ", ") + writer->name;
@@ -205,14 +184,11 @@ std::string dot_id(const std::string& name) { return "\"" + name + "\""; }
 DataFlowGraph build_graph(const Deployment& d, const std::map<std::string, std::string>& vars) {
   DataFlowGraph graph;
   graph.deployment = d.name;
-  for (const FederateSpec& f : d.federates) {
-    std::vector<std::string> args;
-    for (const auto& a : f.args) args.push_back(substitute(a, vars));
-    const std::string binary = fs::path(f.binary).filename().string();
-    graph.nodes.push_back(binary == "fedsim-ios" ? station_node(f)
-                          : binary == "fedsim" ? recorder_node(f, args)
-                                             : component_node(f, args, d.file));
+  const Members members(d, vars);
+  for (const Member& m : members.all()) {
+    graph.nodes.push_back(m.binary == "fedsim" ? recorder_node(m) : component_node(d, m));
   }
+  graph.nodes.push_back(every_federate(d.sync_qos == "reliable" ? std::string(runtime::qos::kReliableSuffix) : ""));
   const QosProfiles qos(substitute(d.qos_file, vars));
   for (GraphNode& node : graph.nodes) {
     for (GraphNode::Port& port : node.ports) {
@@ -227,9 +203,11 @@ DataFlowGraph build_graph(const Deployment& d, const std::map<std::string, std::
 
 std::string graph_text(const DataFlowGraph& graph) {
   std::ostringstream out;
-  out << "deployment " << graph.deployment << ": " << graph.nodes.size()
-      << " federates (and fedsim-timing: frame tick, commands and status to and from every one)\n";
+  const auto members = std::count_if(graph.nodes.begin(), graph.nodes.end(), [](const GraphNode& n) { return !n.host; });
+  out << "deployment " << graph.deployment << ": " << members << " federates, the frame clock included; "
+      << kEveryFederate << " stands for the backbone ports the runtime gives each one\n";
   for (const GraphNode& node : graph.nodes) {
+    if (node.host) continue;
     out << "  " << node.name << " (" << node.binary << ")\n";
     for (const auto& p : node.ports) {
       out << "    " << (p.direction == runtime::PortDirection::kRead ? "reads  " : "writes ")
@@ -259,7 +237,7 @@ std::string graph_dot(const DataFlowGraph& graph) {
       << "  labelloc=t; label=" << dot_id("fedsim deployment " + graph.deployment) << ";\n";
   for (const GraphNode& node : graph.nodes) {
     out << "  " << dot_id(node.name) << " [label=" << dot_id(node.name + "\\n" + node.binary)
-        << (node.ports_known ? "" : ", style=dashed") << "];\n";
+        << (node.host ? ", style=\"rounded,dotted\"" : node.ports_known ? "" : ", style=dashed") << "];\n";
   }
   for (const auto& [topic, use] : uses_of(graph)) {
     if (use.writers.empty()) {
@@ -277,6 +255,7 @@ std::string graph_dot(const DataFlowGraph& graph) {
             << " [color=gray40" << (best_effort ? ", style=dashed" : "") << "];\n";
       }
       for (const auto& [reader, rport] : use.readers) {
+        if (reader == writer) continue;  // the clock reads the status and commands it writes
         out << "  " << dot_id(writer->name) << " -> " << dot_id(reader->name) << " [label="
             << dot_id(topic + "\\n" + wport->qos) << (best_effort ? ", style=dashed" : "")
             << "];\n";

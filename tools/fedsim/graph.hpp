@@ -1,6 +1,9 @@
 // `fedsim graph <deployment>`: the data-flow graph of a deployment, from the ports the
-// federates declare (the same programs `fedsim run` starts, built in this process without
-// joining DDS): who writes and who reads each topic, with the QoS profile of each port. Prints
+// federates declare (the same programs `fedsim run` starts, the frame clock and the instructor
+// station included, built in this process by fedsim/members.hpp without joining DDS): who
+// writes and who reads each topic, with the QoS profile of each port. The backbone ports the
+// runtime gives every federate (it reads the tick and the commands, writes its acknowledgement
+// and status) are one node, "(every federate)". Prints
 // it as text, writes Graphviz DOT (and a PNG through `dot`), and reports what cannot work: a
 // topic a federate reads and nobody writes, a topic written twice, a reliable reader of a
 // best-effort writer (they never match), a lockstep input whose writer is not reliable.
@@ -29,6 +32,7 @@ struct GraphNode {
   };
   std::vector<Port> ports;
   bool ports_known = true;  // false for a binary whose ports fedsim cannot know
+  bool host = false;        // not a member: the backbone ports of every federate's runtime
 };
 
 struct DataFlowGraph {

@@ -1,19 +1,12 @@
 // `fedsim run --in-process`: the deployment's federates as components in one process.
-#include "fedsim/in_process.hpp"
+#include "fedsim/launcher.hpp"
 
 #include "common/runtime/composition.hpp"
 #include "common/runtime/shutdown.hpp"
 #include "common/util/config_node.hpp"
 #include "fedsim/launcher.hpp"
-#include "flight/federate/flight_program.hpp"
-#include "io/io_component.hpp"
-#include "control_loading/control_loading_component.hpp"
-#include "displays/displays_component.hpp"
-#include "motion/motion_component.hpp"
-#include "nav/nav_component.hpp"
-#include "synthetic/synthetic_component.hpp"
-#include "visual/visual_component.hpp"
-#include "scenario/scenario_component.hpp"
+#include "fedsim/members.hpp"
+#include "timing/timing_component.hpp"
 #include "topic/in_process_recorder.hpp"
 
 #include <algorithm>
@@ -26,70 +19,29 @@ namespace fs = std::filesystem;
 
 namespace fedsim::launcher {
 
-const std::map<std::string, runtime::FederateProgram (*)()>& component_programs() {
-  static const std::map<std::string, runtime::FederateProgram (*)()> programs = {
-      {"fedsim-io", &io::program},
-      {"fedsim-flight", &flight::program},
-      {"fedsim-nav", &nav::program},
-      {"fedsim-motion", &motion::program},
-      {"fedsim-control-loading", &control_loading::program},
-      {"fedsim-synthetic", &synthetic::program},
-      {"fedsim-visual", &visual::program},
-      {"fedsim-displays", &displays::program},
-      {"fedsim-scenario", &scenario::program},
-  };
-  return programs;
-}
-
 namespace {
 
-/// CLI11 parses a vector of arguments given in reverse order.
-void parse_args(CLI::App& app, const std::vector<std::string>& args) {
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  app.parse(reversed);
-}
-
-struct RecorderSpec {
-  std::vector<std::string> topics;
-  std::string out_dir;
-};
-
-/// The arguments of a `fedsim record ...` member (the options that matter in-process; the
-/// others, DDS and progress, are accepted and have no effect here).
-RecorderSpec parse_recorder(const std::string& name, const std::vector<std::string>& args) {
-  if (args.empty() || args.front() != "record") {
-    throw util::ConfigError("federate '" + name + "': fedsim " +
-                            (args.empty() ? std::string() : args.front()) +
+/// A `fedsim record` member in-process: its topics and folder (the DDS options have no effect).
+RecorderSpec recorder_in_process(const Deployment& d, const Member& m) {
+  const auto spec = recorder_of(m);
+  if (!spec) {
+    throw util::ConfigError(d.file + ": federate '" + m.spec->name + "': fedsim " +
+                            (m.args.empty() ? std::string() : m.args.front()) +
                             " cannot run in-process (only fedsim record)");
   }
-  RecorderSpec spec;
-  std::string topics;
-  CLI::App app{"record"};
-  app.allow_extras();
-  app.add_option("--topics", topics)->required();
-  app.add_option("--out", spec.out_dir)->required();
-  parse_args(app, std::vector<std::string>(args.begin() + 1, args.end()));
-  std::stringstream in(topics);
-  for (std::string t; std::getline(in, t, ',');) {
-    if (!t.empty()) spec.topics.push_back(t);
+  if (spec->topics.empty() || spec->out_dir.empty()) {
+    throw util::ConfigError(d.file + ": federate '" + m.spec->name + "': fedsim record needs --topics and --out");
   }
-  return spec;
+  return *spec;
 }
 
-std::uint64_t frames_of(const Deployment& d, const std::vector<std::string>& timing_args) {
-  std::uint64_t frames = 0;
-  std::string start = "run";
-  CLI::App app{"timing"};
-  app.allow_extras();
-  app.add_option("--frames", frames);
-  app.add_option("--start", start);
-  parse_args(app, timing_args);
-  if (frames == 0) {
+/// The frame clock's settings for the composition, from the timing member's own options.
+const timing::TimingOptions& clock_of(const Deployment& d, const runtime::Component* timing) {
+  const auto* clock = dynamic_cast<const timing::TimingComponent*>(timing);
+  if (!clock || clock->options().common.max_frames == 0) {
     throw util::ConfigError(d.file + ": timing: args: an in-process run needs --frames N");
   }
-  if (start != "run") throw util::ConfigError(d.file + ": timing: args: --start " + start +
-                                              " is not supported in-process");
-  return frames;
+  return clock->options();
 }
 
 }  // namespace
@@ -101,47 +53,33 @@ int run_in_process(const RunOptions& options) {
   std::map<std::string, std::string> vars;
   std::string out_dir;
   std::vector<std::unique_ptr<runtime::Component>> components;
+  std::vector<bool> required;  // of each component
   std::vector<RecorderSpec> recorders;
-  std::uint64_t frames = 0;
+  std::unique_ptr<runtime::Component> timing;
   try {
     d = load_with_scenario(options);
     out_dir = options.out_dir.empty() ? "out/" + d.name : options.out_dir;
     fs::create_directories(out_dir + "/logs");
     vars = deployment_vars(options.deployment_path, out_dir);
-    std::vector<std::string> timing_args;
-    for (const auto& a : d.timing_args) timing_args.push_back(substitute(a, vars));
-    frames = frames_of(d, timing_args);
-    for (const FederateSpec& f : d.federates) {
-      std::vector<std::string> args;
-      for (const auto& a : f.args) args.push_back(substitute(a, vars));
-      const std::string binary = fs::path(f.binary).filename().string();
-      if (binary == "fedsim") {
-        recorders.push_back(parse_recorder(f.name, args));
+    const Members members(d, vars);
+    for (const Member& m : members.all()) {
+      if (m.binary == "fedsim") {
+        recorders.push_back(recorder_in_process(d, m));
         continue;
       }
-      if (binary == "fedsim-ios") {
-        // The instructor station is a page on a live federation: nothing to step in-process.
-        std::cout << "fedsim run --in-process: " << f.name << " (fedsim-ios) needs a live federation; not run\n";
-        continue;
-      }
-      const auto it = component_programs().find(binary);
-      if (it == component_programs().end()) {
-        throw util::ConfigError(d.file + ": federate '" + f.name + "': " + binary +
+      auto component = build_component(d, m);
+      if (!component) {
+        throw util::ConfigError(d.file + ": federate '" + m.spec->name + "': " + m.binary +
                                 " is not a component program and cannot run in-process");
       }
-      runtime::FederateProgram program = it->second();
-      runtime::FederateOptions common;
-      CLI::App app{program.program};
-      runtime::add_federate_options(app, common, f.name);
-      program.add_options(app);
-      try {
-        parse_args(app, args);
-      } catch (const CLI::ParseError& e) {
-        throw util::ConfigError(d.file + ": federate '" + f.name + "': " + e.what());
+      if (m.is_timing) {  // the composition is the frame clock: it takes the clock's settings
+        timing = std::move(component);
+        continue;
       }
-      common.name = f.name;
-      components.push_back(program.make_component(common));
+      components.push_back(std::move(component));
+      required.push_back(m.spec->required);
     }
+    clock_of(d, timing.get());
   } catch (const runtime::ProgramError& e) {
     std::cerr << "fedsim run: " << e.what() << "\n";
     return e.exit_code();
@@ -149,9 +87,21 @@ int run_in_process(const RunOptions& options) {
     std::cerr << "fedsim run: " << e.what() << "\n";
     return 2;
   }
+  const timing::TimingOptions& clock = clock_of(d, timing.get());
+  const std::uint64_t frames = clock.common.max_frames;
 
-  runtime::Composition composition({d.rate_hz, false});
-  for (auto& c : components) composition.add(*c);
+  runtime::Composition composition({clock.rate_hz, clock.start == "freeze"});
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    try {
+      composition.add(*components[i]);  // starts it: the station opens its page
+    } catch (const std::exception& e) {
+      std::cerr << "fedsim run: " << components[i]->name() << " cannot start: " << e.what() << "\n";
+      if (required[i]) return 2;
+      std::cout << "fedsim run: " << components[i]->name() << " is not required: running without it\n";
+      components[i].reset();
+    }
+  }
+  std::erase(components, nullptr);
   // What a member writes on fedsim/sim_command (a scenario's commands) goes to everyone, as over DDS.
   composition.on_written(runtime::topics::sim_command, std::function<void(const msg::SimCommand&)>(
                                                            [&composition](const msg::SimCommand& c) { composition.command(c); }));
@@ -167,8 +117,11 @@ int run_in_process(const RunOptions& options) {
   for (const auto& topic : composition.unwritten_topics()) {
     std::cout << "fedsim run: note: " << topic << " is read but no federate writes it\n";
   }
+  std::string monitored;
+  for (const auto& topic : composition.unwritten_monitored_topics()) monitored += (monitored.empty() ? "" : ", ") + topic;
+  if (!monitored.empty()) std::cout << "fedsim run: note: monitored, but no federate writes them here: " << monitored << "\n";
   std::cout << "fedsim run: " << d.name << " in-process, lockstep, " << frames << " frames at "
-            << d.rate_hz << " Hz, " << components.size() << " components\n";
+            << clock.rate_hz << " Hz, " << components.size() << " components\n";
   const auto start = std::chrono::steady_clock::now();
   auto next_progress = start + std::chrono::duration<double>(options.progress_period_s);
   bool failed = false;

@@ -8,6 +8,7 @@
 #include "common/util/child_process.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
+#include "fedsim/deployment.hpp"
 #include "fedsim/latency_detect.hpp"
 #include "visual/model/jpeg_encoder.hpp"
 
@@ -1069,6 +1070,7 @@ int measure(const LatencyOptions& o, std::ostream& out, std::ostream& err) {
   write_text(dir / "step_profile.csv", latency_profile_csv(o));
   write_text(dir / "latency_channel.yaml", channel_yaml(o.axis));
   write_text(dir / "latency.yaml", deployment_yaml(o, dir));
+  load_deployment((dir / "latency.yaml").string());  // what it wrote is a deployment (else: file:line)
 
   const bool lockstep = o.mode == "lockstep";
   // 0: a minute for start-up and stopping on top of the simulated time (lockstep is faster).

@@ -1,4 +1,5 @@
 #include "fedsim/launcher.hpp"
+#include "fedsim/members.hpp"
 #include "common/util/build_paths.hpp"
 
 #include "common/runtime/dds_participant.hpp"
@@ -608,24 +609,12 @@ std::unique_ptr<Child> federate_child(const FederateSpec& f, const Plan& p) {
 
 std::unique_ptr<Child> timing_child(Plan& p) {
   auto timing = std::make_unique<Child>();
-  timing->name = "timing";
   timing->timing = true;
-  timing->argv.push_back(resolve_binary("fedsim-timing", p.bin_dir));
-  for (auto& a : common_args("timing", p)) timing->argv.push_back(a);
-  for (const std::string& a : {std::string("--mode"), p.d.mode, std::string("--rate"),
-                               std::to_string(p.d.rate_hz), std::string("--shutdown-on-exit")}) {
-    timing->argv.push_back(a);
-  }
-  // Names are [A-Za-z0-9_-] (deployment.cpp): no comma splits one.
-  std::string expect;
-  for (const auto& c : p.children) {
-    if (c->lockstep) expect += (expect.empty() ? "" : ",") + c->name;
-  }
-  if (!expect.empty()) {
-    timing->argv.push_back("--expect");
-    timing->argv.push_back(expect);
-  }
-  for (const auto& a : p.d.timing_args) timing->argv.push_back(substitute(a, p.vars));
+  const FederateSpec spec = timing_spec(p.d);
+  timing->name = spec.name;
+  timing->argv.push_back(resolve_binary(spec.binary, p.bin_dir));
+  for (auto& a : common_args(spec.name, p)) timing->argv.push_back(a);
+  for (const auto& a : spec.args) timing->argv.push_back(substitute(a, p.vars));
   // Its summary (losses and rejoins) is read back for the run's own; unless the deployment
   // names the file, it goes next to the logs.
   const auto given = std::find(timing->argv.begin(), timing->argv.end(), "--summary-json");

@@ -36,7 +36,7 @@ int run_deployment(const RunOptions& options);
 
 /// Runs the deployment's federates as components in this process (runtime::Composition), in
 /// lockstep for the timing arguments' --frames, recording as its `fedsim record` member asks;
-/// then its after-commands. Every federate must be a component program (see in_process.hpp).
+/// then its after-commands. Every federate must be a component program (fedsim/members.hpp).
 int run_in_process(const RunOptions& options);
 
 /// Loads the deployment and, with options.scenario, adds the fedsim-scenario member that runs

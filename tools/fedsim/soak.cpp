@@ -325,6 +325,12 @@ int run_soak(const SoakOptions& options, std::ostream& out, std::ostream& err) {
     err << "fedsim soak: deployment '" << deployment << "' not found\n";
     return 2;
   }
+  try {
+    load_deployment(deployment);  // its errors now (file:line), not in fedsim run's log
+  } catch (const std::exception& e) {
+    err << "fedsim soak: " << e.what() << "\n";
+    return 2;
+  }
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   // A previous run's recordings and summary would be counted as this run's.

@@ -59,6 +59,16 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
             std::string::npos)
       << graph_text(graph);
   EXPECT_NE(graph_text(graph).find("nav -> fedsim/navigation_state -> displays, ios, recorder"), std::string::npos);
+  // The frame clock and the station are drawn from the ports they declare; the backbone's other
+  // side is the runtime in every federate.
+  EXPECT_NE(dot.find("\"timing\" -> \"(every federate)\" [label=\"fedsim/frame_tick\\ntick\", style=dashed]"),
+            std::string::npos) << dot;
+  EXPECT_NE(dot.find("\"(every federate)\" -> \"timing\" [label=\"fedsim/frame_done\\nframe_done\", style=dashed]"),
+            std::string::npos) << dot;
+  EXPECT_NE(dot.find("\"ios\" -> \"timing\" [label=\"fedsim/sim_command\\ncommand\"]"), std::string::npos) << dot;
+  EXPECT_EQ(dot.find("\"timing\" -> \"timing\""), std::string::npos) << "no loop: the clock reads its own status";
+  EXPECT_NE(graph_text(graph).find("  timing (fedsim-timing)\n    writes fedsim/frame_tick [tick]\n"), std::string::npos)
+      << graph_text(graph);
   // The loader's autopilot input is a monitor: without an autopilot it is a note, not a problem.
   EXPECT_TRUE(graph.problems.empty());
   EXPECT_NE(std::find(graph.notes.begin(), graph.notes.end(),
@@ -69,6 +79,18 @@ TEST(Graph, DefaultScenarioWiresIoToFlightToNavMotionLoaderStationAndRecorder) {
   const std::string committed_dot((std::istreambuf_iterator<char>(committed)),
                                   std::istreambuf_iterator<char>());
   EXPECT_EQ(committed_dot, dot) << "docs/images/federation_default.dot is out of date";
+}
+
+TEST(Graph, TheSyncQosOfTheDeploymentIsTheClocksAndEveryFederates) {
+  const DataFlowGraph graph = graph_of_text(R"(name: reliable
+sync_qos: reliable
+federates:
+  - {name: io, binary: fedsim-io, args: [--profile, "${DATA_DIR}/profiles/elevator_doublets.csv"]}
+)");
+  EXPECT_TRUE(graph.problems.empty()) << graph_text(graph);
+  EXPECT_NE(graph_text(graph).find("writes fedsim/frame_tick [tick_reliable]"), std::string::npos) << graph_text(graph);
+  EXPECT_NE(graph_dot(graph).find("[label=\"fedsim/frame_done\\nframe_done_reliable\"]"), std::string::npos)
+      << graph_dot(graph);
 }
 
 TEST(Graph, AReaderWithoutAWriterIsAProblem) {
