@@ -14,6 +14,7 @@
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/util/child_process.hpp"
 #include "common/util/monotonic_clock.hpp"
+#include "common/util/wait_until.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -59,12 +60,7 @@ class StatusWatch {
 
   /// Waits (at most timeout_s) until `done` holds; false on timeout.
   bool wait_until(double timeout_s, const std::function<bool()>& done) {
-    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-    while (std::chrono::steady_clock::now() < until) {
-      if (done()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return done();
+    return util::wait_until(done, timeout_s, std::chrono::milliseconds(20));
   }
   bool running(const std::string& name, std::uint32_t not_pid = 0) {
     std::lock_guard lock(mutex_);
