@@ -125,7 +125,7 @@ TEST(Record, TwoTopicsOfOneTypeOnOneParticipant) {
       c.stamp().frame(frame);
       controls.publish(c);
       applied.publish(c);
-      std::this_thread::sleep_for(20ms);
+      std::this_thread::sleep_for(20ms);  // a stream at ~50 Hz (pacing, not waiting)
     }
   });
   const auto out_dir = std::filesystem::temp_directory_path() / "fedsim_two_topics_record";
