@@ -10,6 +10,9 @@
 # top-level CMakeLists.txt) then fails the configuration if any registered library links, even
 # indirectly, one of FEDSIM_FORBIDDEN_IN_MODELS, or if one of its sources includes a DDS, IDL or
 # runtime header. Models stay testable alone and usable in-process, in batch and in any federate.
+# Their tests are labelled `unit` (cmake/FedsimTestLabels.cmake).
+
+include(${CMAKE_CURRENT_LIST_DIR}/FedsimTestLabels.cmake)
 
 set(FEDSIM_FORBIDDEN_IN_MODELS fastrtps fastcdr fedsim_idl fedsim_runtime)
 # What a model source may not include (DDS headers, generated IDL types, the runtime).
@@ -35,7 +38,7 @@ function(fedsim_model_library target folder)
     add_executable(${target}_tests ${tests})
     target_link_libraries(${target}_tests PRIVATE ${target} fedsim_util fedsim_allocation_counter
                           GTest::gtest_main)
-    gtest_discover_tests(${target}_tests DISCOVERY_TIMEOUT 60)
+    fedsim_discover_tests(${target}_tests unit DISCOVERY_TIMEOUT 60)
   endif()
 endfunction()
 

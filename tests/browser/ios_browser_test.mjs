@@ -76,16 +76,18 @@ try {
   // Live data and the moving aircraft.
   await waitFor('pushes with the aircraft state', () =>
     fedsim(() => window.fedsim.track.length > 5 && window.fedsim.state.timing.run_state === 'run'), 60000);
-  const before = await fedsim(() => ({ p: window.fedsim.track.at(-1), t: window.fedsim.state.timing.sim_time_s,
-                                       n: window.fedsim.track.length,
-                                       plot: window.fedsim.plot.series[0].points.length }));
-  await sleep(2000);
-  const after = await fedsim(() => ({ p: window.fedsim.track.at(-1), t: window.fedsim.state.timing.sim_time_s,
-                                      n: window.fedsim.track.length,
-                                      plot: window.fedsim.plot.series[0].points.length }));
+  const now = () => fedsim(() => ({ p: window.fedsim.track.at(-1), t: window.fedsim.state.timing.sim_time_s,
+                                    n: window.fedsim.track.length,
+                                    plot: window.fedsim.plot.series[0].points.length }));
+  const before = await now();
+  // Two simulated seconds later (waited for, not slept: a loaded machine flies fewer frames).
+  const after = await waitFor('two seconds of flight', async () => {
+    const a = await now();
+    return a.t >= before.t + 2 && a;
+  });
   const movedM = Math.hypot((after.p.lat - before.p.lat) * 111320,
                             (after.p.lon - before.p.lon) * 111320 * Math.cos(after.p.lat * Math.PI / 180));
-  check(movedM > 50 && after.n > before.n, 'the map shows the aircraft moving', `${movedM.toFixed(0)} m in 2 s, track ${before.n} -> ${after.n} points`);
+  check(movedM > 50 && after.n > before.n, 'the map shows the aircraft moving', `${movedM.toFixed(0)} m in ${(after.t - before.t).toFixed(1)} s, track ${before.n} -> ${after.n} points`);
   check(after.t > before.t, 'sim time runs before the freeze (control)', `${before.t.toFixed(2)} -> ${after.t.toFixed(2)} s`);
   check(after.plot > before.plot, 'a plot receives data', `${before.plot} -> ${after.plot} points`);
   // The symbol is drawn where the aircraft is: the map follows it, so it sits at the centre.
@@ -104,14 +106,21 @@ try {
   await page.click('#btn-freeze');
   await waitFor('the freeze confirmed', () => fedsim(() => window.fedsim.state.timing.run_state === 'freeze' &&
     window.fedsim.state.commands.some((c) => c.text === 'freeze' && c.status === 'confirmed')));
-  await sleep(300);
-  const frozen1 = await fedsim(() => ({ t: window.fedsim.state.timing.sim_time_s,
-    lat: window.fedsim.state.topics['fedsim/aircraft_state'].f.latitude_rad }));
-  await sleep(1500);
-  const frozen2 = await fedsim(() => ({ t: window.fedsim.state.timing.sim_time_s,
+  // Frozen: frames go on ticking (a second of them, 50) while sim time and position stand still;
+  // the first look a few frames after the confirmation, when no earlier state is on its way.
+  const frozenNow = () => fedsim(() => ({ t: window.fedsim.state.timing.sim_time_s,
     lat: window.fedsim.state.topics['fedsim/aircraft_state'].f.latitude_rad, frame: window.fedsim.state.timing.frame }));
+  const confirmed = await frozenNow();
+  const frozen1 = await waitFor('frames after the freeze', async () => {
+    const f = await frozenNow();
+    return f.frame >= confirmed.frame + 10 && f;
+  });
+  const frozen2 = await waitFor('a second of frozen frames', async () => {
+    const f = await frozenNow();
+    return f.frame >= frozen1.frame + 50 && f;
+  });
   check(frozen1.t === frozen2.t && frozen1.lat === frozen2.lat, 'Freeze freezes the simulation',
-        `sim time ${frozen1.t} -> ${frozen2.t} s while frames tick (frame ${frozen2.frame})`);
+        `sim time ${frozen1.t} -> ${frozen2.t} s while frames tick (frame ${frozen1.frame} -> ${frozen2.frame})`);
 
   // Reposition to a 5 NM gate on KSFO 28R from the form.
   await page.fill('#form-runway input[name=gate_nm]', '5');
@@ -129,37 +138,49 @@ try {
   await waitFor('running again', () => fedsim(() => window.fedsim.state.timing.run_state === 'run'));
   await page.selectOption('#plot-field', 'climb_rate_mps');
   await page.click('#plot-add');
-  await sleep(6000);
+  // The added climb rate plotted over five seconds (the README's screenshot shows it).
+  await waitFor('five seconds of the climb rate plotted', () => fedsim(() => {
+    const points = window.fedsim.plot.series.at(-1).points;
+    return window.fedsim.plot.series.length > 1 && points.length > 1 && points.at(-1)[0] - points[0][0] >= 5;
+  }));
 
   // Replay the last 30 s of the live ring through the flight federate, pause it, take control.
   const position = () => fedsim(() => {
     const f = window.fedsim.state.topics['fedsim/aircraft_state'].f;
-    return { lat: f.latitude_rad * 180 / Math.PI, lon: f.longitude_rad * 180 / Math.PI, t: window.fedsim.state.wall_s };
+    return { lat: f.latitude_rad * 180 / Math.PI, lon: f.longitude_rad * 180 / Math.PI, t: window.fedsim.state.wall_s,
+             sim_t: window.fedsim.state.timing.sim_time_s };
+  });
+  /// The position once `what` holds of it (at most 15 s).
+  const positionWhen = (what, predicate) => waitFor(what, async () => {
+    const p = await position();
+    return predicate(p) && p;
   });
   const metres = (a, b) => Math.hypot((a.lat - b.lat) * 111320, (a.lon - b.lon) * 111320 * Math.cos(a.lat * Math.PI / 180));
   const live = await position();
   await page.selectOption('#replay-last', '30');
   await page.click('#replay-ring');
   await waitFor('the replay running', () => fedsim(() => window.fedsim.state.replay.active && window.fedsim.state.replay.playing));
-  await sleep(1000);
-  const replayed = await position();
+  const replayed = await positionWhen('the replayed position', (p) => metres(p, live) > 200);
   check(metres(replayed, live) > 200, 'the replay shows the aircraft where it was', `${metres(replayed, live).toFixed(0)} m from where it is live`);
-  await sleep(1000);
-  const replayedLater = await position();
-  check(metres(replayedLater, replayed) > 20, 'the replay moves on (control)', `${metres(replayedLater, replayed).toFixed(0)} m in 1 s`);
+  const replayedLater = await positionWhen('the replay moving on', (p) => metres(p, replayed) > 20);
+  check(metres(replayedLater, replayed) > 20, 'the replay moves on (control)',
+        `${metres(replayedLater, replayed).toFixed(0)} m in ${(replayedLater.t - replayed.t).toFixed(1)} s`);
   await page.click('#replay-pause');
   await waitFor('the replay paused', () => fedsim(() => !window.fedsim.state.replay.playing));
-  await sleep(300);
-  const paused1 = await position();
-  await sleep(1000);
-  const paused2 = await position();
+  // Paused, the federation runs on and the pushes (stamped with the station's wall clock) keep
+  // coming: the first look at a push made after the pause, the second a second of pushes later.
+  const pausedAt = await position();
+  const paused1 = await positionWhen('a push after the pause', (p) => p.t >= pausedAt.t + 0.3);
+  const paused2 = await positionWhen('a second of pushes while paused', (p) => p.t >= paused1.t + 1);
   check(metres(paused1, paused2) < 0.01, 'a paused replay holds the aircraft', `${metres(paused1, paused2).toFixed(3)} m in 1 s while the federation runs`);
   await page.click('#replay-take');
   await waitFor('control taken', () => fedsim(() => !window.fedsim.state.replay.active));
-  await sleep(1500);
-  const flown = await position();
+  // 1.5 simulated seconds after taking control (the aircraft flies at about 60 m/s).
+  const taken = await position();
+  const flown = await positionWhen('1.5 s flown after taking control', (p) => p.sim_t >= taken.sim_t + 1.5);
   const fromPause = metres(flown, paused2);
   check(fromPause > 20 && fromPause < 250, 'taking control flies on from the replayed state', `${fromPause.toFixed(0)} m from it 1.5 s later`);
+  // The push and frame rates below are measured over wall time: two seconds of it, on purpose.
   await sleep(2000);
   const stats = await fedsim(() => ({ fps: window.fedsim.stats.fps, push: window.fedsim.state.server.push_hz_measured,
                                       pushes: window.fedsim.pushes, hz: window.fedsim.state.server.push_hz }));
@@ -180,7 +201,8 @@ try {
   await waitFor('the scenario stopped', () => fedsim(() => !window.fedsim.state.scenario.running));
   await page.selectOption('#form-failure select[name=system]', 'engine1');
   await page.click('#form-failure button[name=restore]');
-  await sleep(1500);
+  await waitFor('the engine restored', () => fedsim(() =>
+    window.fedsim.state.commands.some((c) => c.text === 'restore engine1' && c.status === 'confirmed')));
 
   if (args.screenshot) {
     await page.screenshot({ path: args.screenshot, fullPage: true });

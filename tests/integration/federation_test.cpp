@@ -2,6 +2,7 @@
 // a killed federate, scripted I/O, the launcher, and network confinement. Each test uses its
 // own DDS domain so that ctest -j runs do not see each other.
 #include "common/util/child_process.hpp"
+#include "common/util/wait_until.hpp"
 #include "common/util/build_paths.hpp"
 #include "common/units/units.hpp"
 #include "common/runtime/federate_options.hpp"
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 #include <mutex>
@@ -45,9 +47,12 @@ struct TraceRow {
   double elevator;
 };
 
+/// The rows of a fedsim-synthetic trace; of one still being written, the whole lines only.
 std::vector<TraceRow> read_trace(const std::string& path) {
   std::vector<TraceRow> rows;
-  std::ifstream in(path);
+  std::string text = read_file(path);
+  text.erase(text.find_last_of('\n') == std::string::npos ? 0 : text.find_last_of('\n') + 1);
+  std::istringstream in(text);
   std::string line;
   std::getline(in, line);  // header
   while (std::getline(in, line)) {
@@ -59,6 +64,26 @@ std::vector<TraceRow> read_trace(const std::string& path) {
     rows.push_back(r);
   }
   return rows;
+}
+
+/// Waits (at most timeout_s) until the trace a federate is writing at `path` satisfies `done`.
+bool wait_for_trace(const std::string& path, double timeout_s,
+                    const std::function<bool(const std::vector<TraceRow>&)>& done) {
+  return util::wait_until([&] { return done(read_trace(path)); }, timeout_s, std::chrono::milliseconds(20));
+}
+
+/// The run has started: the trace holds `rows` frames.
+std::function<bool(const std::vector<TraceRow>&)> has_rows(std::size_t rows) {
+  return [rows](const std::vector<TraceRow>& trace) { return trace.size() >= rows; };
+}
+
+/// Rows of the trace in `state`, and of those, the ones after the first row in `after`.
+int rows_in(const std::vector<TraceRow>& trace, msg::RunState state) {
+  return static_cast<int>(std::count_if(trace.begin(), trace.end(), [&](const TraceRow& r) { return r.state == state; }));
+}
+int rows_in_after(const std::vector<TraceRow>& trace, msg::RunState state, msg::RunState after) {
+  const auto first = std::find_if(trace.begin(), trace.end(), [&](const TraceRow& r) { return r.state == after; });
+  return static_cast<int>(std::count_if(first, trace.end(), [&](const TraceRow& r) { return r.state == state; }));
 }
 
 std::vector<std::string> dds_args(int domain, const std::string& name) {
@@ -105,14 +130,16 @@ TEST(Federation, LockstepTicksAreOrderedCompleteAndObeyFreezeAndReset) {
   auto dds = instructor_participant(domain);
   runtime::Publisher<msg::SimCommand> commands(dds, runtime::topics::sim_command, runtime::qos::kCommand);
   ASSERT_TRUE(commands.wait_for_readers(3, std::chrono::seconds(10)));  // timing, a, b
-  // Wait for the run to start (a's trace grows), then freeze, run, reset.
-  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 2000; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  // Wait for the run to start (a's trace grows), then freeze, run, reset, each once a's trace
+  // shows the one before.
+  const std::string trace_a = dir + "/a.csv";
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, has_rows(50))) << timing->output();
   send_run_state(commands, msg::RUN_STATE_FREEZE, 1);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, [](const auto& t) { return rows_in(t, msg::RUN_STATE_FREEZE) > 20; }));
   send_run_state(commands, msg::RUN_STATE_RUN, 2);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, [](const auto& t) {
+    return rows_in_after(t, msg::RUN_STATE_RUN, msg::RUN_STATE_FREEZE) > 0;
+  }));
   send_run_state(commands, msg::RUN_STATE_RESET, 3);
 
   ASSERT_TRUE(timing->wait(30)) << timing->output();
@@ -196,9 +223,7 @@ TEST(Federation, KilledFederateIsReportedAndLockstepGoesOn) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "lockstep", "--rate", "100", "--scale", "1", "--expect", "a,b",
                        "--frames", "500", "--ack-timeout", "3", "--shutdown-on-exit"});
-  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 1500; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  ASSERT_TRUE(wait_for_trace(dir + "/a.csv", 30, has_rows(50))) << timing->output();
   b->kill_hard();
   ASSERT_TRUE(timing->wait(40)) << "lockstep hung after a federate died:\n" << timing->output();
   EXPECT_EQ(timing->exit_code(), 0);
@@ -244,11 +269,13 @@ std::unique_ptr<ChildProcess> run_with_paused_writer(bool pause, int domain) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "realtime", "--rate", "50", "--expect", "io,c", "--duration",
                        "4", "--shutdown-on-exit"});
-  for (int i = 0; i < 300 && read_file(dir + "/c.csv").size() < 2000; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  if (!wait_for_trace(dir + "/c.csv", 30, has_rows(50))) {
+    ADD_FAILURE() << "the federation did not start:\n" << timing->output();
+    return nullptr;
   }
   if (pause) {
     kill(io->pid(), SIGSTOP);
+    // The silence itself, on the wall clock on purpose: 50 frames, five times the reader's limit.
     std::this_thread::sleep_for(std::chrono::milliseconds(1000));
     kill(io->pid(), SIGCONT);
   }
@@ -403,12 +430,8 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   runtime::Subscription<msg::EngineState> engine_sub(dds, runtime::topics::engine_state, runtime::qos::kState);
   msg::AircraftState state;
   msg::EngineState engine;
-  auto wait_for = [&](const std::function<bool()>& condition, double timeout_s) {
-    for (int i = 0; i < timeout_s * 50; ++i) {
-      if (condition()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return false;
+  const auto wait_for = [](const std::function<bool()>& condition, double timeout_s) {
+    return util::wait_until(condition, timeout_s, std::chrono::milliseconds(20));
   };
   auto latest = [&] { return state_sub.latest(state); };
   ASSERT_TRUE(wait_for([&] { return latest() && state.stamp().sim_time_s() > 1.0; }, 30))
@@ -441,8 +464,9 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   move.reposition().runway("28R");
   commands.publish(move);
   ASSERT_TRUE(wait_for([&] { return latest() && state.on_ground(); }, 10)) << flight->output();
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  latest();
+  // It holds for a simulated second (not a wall-clock one: a loaded machine flies fewer frames).
+  const double parked_at_s = state.stamp().sim_time_s();
+  ASSERT_TRUE(wait_for([&] { return latest() && state.stamp().sim_time_s() >= parked_at_s + 1.0; }, 20));
   EXPECT_NEAR(state.latitude_rad() * 180 / units::kPi, 37.6139, 0.002);
   EXPECT_NEAR(state.longitude_rad() * 180 / units::kPi, -122.3582, 0.002);
   const double heading_error_deg = std::remainder(state.psi_rad() * 180 / units::kPi - 298.0, 360.0);
@@ -454,7 +478,7 @@ TEST(Federation, FlightFederateHonoursFailureWeatherRepositionFreezeAndReset) {
   ASSERT_TRUE(wait_for([&] {
     msg::AircraftState a, b;
     if (!state_sub.latest(a)) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // two looks: frames on, time held
     state_sub.latest(b);
     return b.stamp().frame() > a.stamp().frame() && b.stamp().sim_time_s() == a.stamp().sim_time_s();
   }, 10)) << "freeze did not hold simulation time while frames went on";
@@ -534,8 +558,9 @@ TEST(Federation, CommandLineInstructorFreezesAndRuns) {
   const int domain = 142;
   const std::string dir = temp_dir("cli");
   auto a = start(dir, "a", domain, "fedsim-synthetic", {"--trace", dir + "/a.csv"});
+  // Ended by the test once it has seen what it needs (--duration is only a bound).
   auto timing = start(dir, "timing", domain, "fedsim-timing",
-                      {"--mode", "realtime", "--rate", "100", "--expect", "a", "--duration", "6",
+                      {"--mode", "realtime", "--rate", "100", "--expect", "a", "--duration", "60",
                        "--shutdown-on-exit"});
   auto command = [&](const std::string& what) {
     ChildProcess cli({bin("fedsim"), "command", what, "--domain", std::to_string(domain)},
@@ -543,12 +568,15 @@ TEST(Federation, CommandLineInstructorFreezesAndRuns) {
     EXPECT_TRUE(cli.wait(20));
     EXPECT_EQ(cli.exit_code(), 0) << cli.output();
   };
-  for (int i = 0; i < 300 && read_file(dir + "/a.csv").size() < 2000; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  const std::string trace_a = dir + "/a.csv";
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, has_rows(50))) << timing->output();
   command("freeze");
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, [](const auto& t) { return rows_in(t, msg::RUN_STATE_FREEZE) > 20; }));
   command("run");
+  ASSERT_TRUE(wait_for_trace(trace_a, 30, [](const auto& t) {
+    return rows_in_after(t, msg::RUN_STATE_RUN, msg::RUN_STATE_FREEZE) > 20;
+  }));
+  timing->terminate();  // --shutdown-on-exit: the federation stops with it
   ASSERT_TRUE(timing->wait(30)) << timing->output();
   ASSERT_TRUE(a->wait(10));
   const auto rows = read_trace(dir + "/a.csv");
@@ -557,7 +585,7 @@ TEST(Federation, CommandLineInstructorFreezesAndRuns) {
     if (r.state == msg::RUN_STATE_FREEZE) ++frozen;
     if (frozen > 0 && r.state == msg::RUN_STATE_RUN) ++running_after_freeze;
   }
-  EXPECT_GT(frozen, 20);  // ~0.5 s at 100 Hz, plus the command's own discovery time
+  EXPECT_GT(frozen, 20);
   EXPECT_GT(running_after_freeze, 20);
 }
 
@@ -629,7 +657,8 @@ federates:
 // (SIGSTOP) in the middle of a run; with no tick, neither the control loader nor the motion
 // platform is stepped, and the host's tick watchdog cuts the loader off (its SAFE state
 // published at once) and trips the platform, whose own controller parks it on the wall clock.
-// Negative control: before the stop both are engaged.
+// Negative control: before the stop neither is cut off: the loader fades in or is active, the
+// platform rises (5 cm up at least) or is engaged.
 TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
   const int domain = 152;
   const std::string dir = temp_dir("ticks-stop");
@@ -643,6 +672,7 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
     int safe_samples_after_stop = 0;
     std::string cut_off_reason, fault_reason;
     std::vector<double> fault_mean_jack_m;  // motion samples in FAULT, in arrival order
+    double mean_jack_m = 0.0, lowest_mean_jack_m = 1e9;  // the platform now, and parked
     bool stopped = false;
   } seen;
   const auto wall_s = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
@@ -668,6 +698,9 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
       dds, runtime::topics::motion_state, {}, [&](const msg::MotionPlatformState& m, const auto&) {
         std::lock_guard lock(seen.mutex);
         seen.motion_now = m.status();
+        seen.mean_jack_m = 0.0;
+        for (double l : m.jack_length_m()) seen.mean_jack_m += l / 6.0;
+        seen.lowest_mean_jack_m = std::min(seen.lowest_mean_jack_m, seen.mean_jack_m);
         // Engaging counts: a stall while it rises trips it too, and it must be restored as well.
         if (m.status() == msg::MOTION_ENGAGED || m.status() == msg::MOTION_ENGAGING) seen.motion_was_engaged = true;
         if (m.status() == msg::MOTION_FAULT && seen.stopped) {
@@ -686,24 +719,32 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "realtime", "--rate", "50", "--expect", "io,flight,control_loading,motion",
                        "--duration", "90", "--shutdown-on-exit"});
-  // Until both are engaged at once (the motion takes 5-6.5 s to rise to neutral), at most 60 s.
-  // These VMs lose CPU at random: a real stall of 2.5 frames or more cuts the loader off or
-  // trips the platform before the test stops the ticks (the watchdog doing its job). Then the
-  // test restores it as an instructor would and waits for it to engage again.
+  // Until neither is cut off, the platform risen 5 cm (so that its parking shows), at most 60 s.
+  // Not "both engaged": the platform takes 5-6.5 s to rise to neutral, and on a loaded machine
+  // a stall of 2.5 frames, or 3 late ticks in 50 frames, cuts the loader off or trips the
+  // platform before the test stops the ticks (the watchdog doing its job) more often than that;
+  // a cut-off then is not the stop's. The test restores what tripped, as an instructor would.
   runtime::Publisher<msg::SimCommand> commands(dds, runtime::topics::sim_command, runtime::qos::kCommand);
+  std::uint32_t restores = 0;
   const auto restore = [&](const char* target) {
     msg::SimCommand command;
     command.kind(msg::COMMAND_FAILURE);
+    command.issuer("test");
+    // Numbered: a receiver drops a setting identical to the last of its kind and target as a
+    // re-delivery, so an unnumbered second restore of the same system was never applied.
+    command.sequence_number(++restores);
     command.target(target);
     command.failure().active(false);
     commands.publish(command);
     std::printf("%s tripped by a CPU stall before the stop: restored\n", target);
   };
-  bool both_engaged = false, loader_restoring = false, motion_restoring = false;
-  for (int i = 0; i < 3000 && !both_engaged; ++i) {
+  bool both_on = false, loader_restoring = false, motion_restoring = false;
+  for (int i = 0; i < 3000 && !both_on; ++i) {
     {
       std::lock_guard lock(seen.mutex);
-      both_engaged = seen.loader_now == msg::CONTROL_LOADING_ACTIVE && seen.motion_now == msg::MOTION_ENGAGED;
+      const bool motion_up = seen.motion_now == msg::MOTION_ENGAGED ||
+                             (seen.motion_now == msg::MOTION_ENGAGING && seen.mean_jack_m > seen.lowest_mean_jack_m + 0.05);
+      both_on = seen.loader_now != msg::CONTROL_LOADING_SAFE && motion_up;
       // Restored (no longer cut off): a later stall is restored again.
       if (seen.loader_now != msg::CONTROL_LOADING_SAFE) loader_restoring = false;
       if (seen.motion_now != msg::MOTION_FAULT) motion_restoring = false;
@@ -716,16 +757,28 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
         motion_restoring = true;
       }
     }
-    if (!both_engaged) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (!both_on) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  ASSERT_TRUE(both_engaged) << "the loader and the motion were never engaged at once:\n"
+  ASSERT_TRUE(both_on) << "the loader and the motion were never both on (the platform up) at once:\n"
                             << cl->output() << mo->output();
   kill(timing->pid(), SIGSTOP);
   {
     std::lock_guard lock(seen.mutex);
     seen.stopped = true;
+    std::printf("ticks stopped: loader %d, motion %d, the platform %.3f m above parked\n",
+                static_cast<int>(seen.loader_now), static_cast<int>(seen.motion_now),
+                seen.mean_jack_m - seen.lowest_mean_jack_m);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // The ticks stay stopped until the loader is SAFE and the platform has parked on its own for
+  // 40 samples (about 0.8 s at 50 Hz), its jacks retracting: waited for, not slept, so that a
+  // loaded machine gets the time it needs.
+  const auto parked = [&] {
+    std::lock_guard lock(seen.mutex);
+    return seen.first_safe_s > 0.0 && seen.fault_mean_jack_m.size() > 40u &&
+           seen.fault_mean_jack_m.back() < seen.fault_mean_jack_m.front() - 0.01;
+  };
+  const bool cut_and_parked = util::wait_until(parked, 30);
+  const double continued_s = wall_s();
   kill(timing->pid(), SIGCONT);
   double cut_after_s = 0.0;
   {
@@ -734,14 +787,17 @@ TEST(Federation, StoppedTicksCutTheLoaderOffAndParkTheMotion) {
     cut_after_s = seen.first_safe_s - seen.last_tick_s;
     EXPECT_EQ(seen.cut_off_reason.rfind("no frame tick for", 0), 0u) << seen.cut_off_reason;
     EXPECT_EQ(seen.fault_reason.rfind("no frame tick for", 0), 0u) << seen.fault_reason;
-    // The platform kept parking with no tick: about 50 samples a second, the jacks retracting.
-    ASSERT_GT(seen.fault_mean_jack_m.size(), 40u);
-    EXPECT_LT(seen.fault_mean_jack_m.back(), seen.fault_mean_jack_m.front() - 0.01);
+    // The platform kept parking with no tick, the jacks retracting.
+    ASSERT_TRUE(cut_and_parked) << seen.fault_mean_jack_m.size() << " motion samples in FAULT:\n" << mo->output();
   }
   std::printf("ticks stopped: the loader's SAFE state arrived %.1f ms after the last tick (50 Hz, cut-off at 2.5 frames without a tick)\n",
               cut_after_s * 1000.0);
   EXPECT_LT(cut_after_s, 0.5);  // behaviour, not a timing goal: it came without a tick
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // The ticks go on again before the federation is stopped.
+  EXPECT_TRUE(util::wait_until([&] {
+    std::lock_guard lock(seen.mutex);
+    return seen.last_tick_s > continued_s;
+  }, 10));
   timing->terminate();  // --shutdown-on-exit: the federation stops with it
   ASSERT_TRUE(timing->wait(30)) << timing->output();
   for (auto* p : {io.get(), flight.get(), cl.get(), mo.get()}) ASSERT_TRUE(p->wait(15));
@@ -794,13 +850,10 @@ TEST(Federation, AVisualChannelDrawsTheApproachAndSnapshotsOnCommand) {
   auto timing = start(dir, "timing", domain, "fedsim-timing",
                       {"--mode", "realtime", "--rate", "50", "--expect", "io,flight", "--duration", "12",
                        "--shutdown-on-exit"});
-  for (int i = 0; i < 1500; ++i) {
-    {
-      std::lock_guard lock(seen.mutex);
-      if (seen.statuses >= 5 && seen.pictures >= 2) break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  ASSERT_TRUE(util::wait_until([&] {
+    std::lock_guard lock(seen.mutex);
+    return seen.statuses >= 5 && seen.pictures >= 2;
+  }, 30)) << visual->output();
   auto command = [&](const std::vector<std::string>& args, const std::string& log) {
     std::vector<std::string> argv = {bin("fedsim"), "command"};
     argv.insert(argv.end(), args.begin(), args.end());

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -35,7 +37,8 @@ TEST(FederateOptions, CommandLineSetsNameDomainAndProfile) {
 }
 
 TEST(FederateOptions, ConfigFileProvidesOptionsAndTheCommandLineWins) {
-  const auto path = std::filesystem::temp_directory_path() / "fedsim_options_test.toml";
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("fedsim_options_test_" + std::to_string(::getpid()) + ".toml");  // runs at once apart
   std::ofstream(path) << "name = \"flight2\"\ndomain = 33\nlog-level = \"warn\"\n";
   FederateOptions o;
   CLI::App app;

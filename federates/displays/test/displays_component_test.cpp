@@ -9,6 +9,7 @@
 
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
+#include "common/util/test/case_dir.hpp"
 #include "visual/model/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
@@ -112,7 +113,7 @@ msg::SimCommand snapshot(const std::string& target, const std::string& tag) {
 
 class DisplaysComponentTest : public ::testing::Test {
  protected:
-  DisplaysComponentTest() : dir_(output_dir()), displays_("displays", small_setup(dir_.string())), composition_({}) {
+  DisplaysComponentTest() : dir_(util::test::case_dir(output_dir())), displays_("displays", small_setup(dir_.string())), composition_({}) {
     for (const char* f : {"pfd.png", "nd.png", "nd_approach.png", "pfd_approach.png"}) std::filesystem::remove(dir_ / f);
     composition_.add(writer_);
     composition_.add(displays_);

@@ -6,6 +6,7 @@
 
 #include "common/runtime/composition.hpp"
 #include "common/runtime/federate_options.hpp"
+#include "common/util/wait_until.hpp"
 #include "tools/topic/in_process_recorder.hpp"
 
 #include <gtest/gtest.h>
@@ -83,15 +84,10 @@ TEST(StationReplay, ARecordingIsPublishedBackSampleForSample) {
   EXPECT_EQ(started["samples"], 100);
   EXPECT_TRUE(started["active"].get<bool>());
   // 2 s of recording at 2x: one second, then the last sample held.
-  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  for (;;) {
-    {
-      std::lock_guard lock(mutex);
-      if (!received.empty() && std::abs(received.back().altitude_msl_m() - (1000.0 + 0.123456789 * 2.0)) < 1e-12) break;
-    }
-    ASSERT_LT(std::chrono::steady_clock::now(), until) << "the last sample did not arrive";
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  ASSERT_TRUE(util::wait_until([&] {
+    std::lock_guard lock(mutex);
+    return !received.empty() && std::abs(received.back().altitude_msl_m() - (1000.0 + 0.123456789 * 2.0)) < 1e-12;
+  }, 30)) << "the last sample did not arrive";
   replay.stop();
   std::lock_guard lock(mutex);
   // Every sample that arrived is one of the recorded ones, exactly (the sample of frame k has

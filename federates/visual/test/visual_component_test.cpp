@@ -7,6 +7,7 @@
 
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
+#include "common/util/test/case_dir.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/jpeg_encoder.hpp"
 #include "visual/model/test/test_support.hpp"
@@ -100,7 +101,7 @@ std::int64_t now_utc_ns() {
 class VisualComponentTest : public ::testing::Test {
  protected:
   VisualComponentTest()
-      : dir_(test::output_dir() / "component"),
+      : dir_(util::test::case_dir(test::output_dir() / "component")),
         visual_("visual", (std::filesystem::create_directories(dir_), small_setup(dir_.string()))),
         composition_({}) {
     composition_.add(writer_);
@@ -175,8 +176,7 @@ TEST_F(VisualComponentTest, SnapshotsOnCommandButNotFromTheCommandHistory) {
 // The picture at a height (the decision height): drawn in the frame the new state first descends
 // through it, whatever the render rate, and only once; a start below the height captures nothing.
 TEST(VisualCapture, ThePictureAtTheDecisionHeightIsTakenOnceOnTheWayDown) {
-  const std::filesystem::path dir = test::output_dir() / "capture";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = util::test::case_dir(test::output_dir() / "capture");
   auto fly = [&](double capture_ft, const std::string& file, int frames) {
     VisualSetup setup = small_setup(dir.string());
     setup.render_hz = 0.5;  // one image every 100 frames: the capture must not wait for it
@@ -277,8 +277,7 @@ TEST_F(VisualComponentTest, ANanStateIsRejectedAndTheLastPictureStays) {
 // alone has only its few green threshold lights), and the
 // corners, away from the symbology, are the scene's pixels unchanged.
 Image render_once(bool hud) {
-  const auto dir = test::output_dir() / "component";
-  std::filesystem::create_directories(dir);
+  const auto dir = util::test::case_dir(test::output_dir() / "component");
   StateWriter writer;
   VisualSetup setup = small_setup(dir.string());
   setup.channel.width_px = 320;

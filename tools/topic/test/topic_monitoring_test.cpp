@@ -125,10 +125,11 @@ TEST(Record, TwoTopicsOfOneTypeOnOneParticipant) {
       c.stamp().frame(frame);
       controls.publish(c);
       applied.publish(c);
-      std::this_thread::sleep_for(20ms);
+      std::this_thread::sleep_for(20ms);  // a stream at ~50 Hz (pacing, not waiting)
     }
   });
-  const auto out_dir = std::filesystem::temp_directory_path() / "fedsim_two_topics_record";
+  const auto out_dir = std::filesystem::temp_directory_path() /
+                       ("fedsim_two_topics_record_" + std::to_string(::getpid()));  // runs at once apart
   std::filesystem::remove_all(out_dir);
   RecordOptions options;
   options.dds = loopback(183, "fedsim");

@@ -8,6 +8,7 @@
 #include "common/runtime/federate_options.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_types.hpp"
+#include "common/util/wait_until.hpp"
 
 #include <fastrtps/types/DynamicDataFactory.h>
 #include <fastrtps/types/DynamicPubSubType.h>
@@ -368,9 +369,7 @@ class Collector {
     return samples_;
   }
   bool wait_for(std::size_t n, std::chrono::milliseconds timeout) const {
-    const auto until = std::chrono::steady_clock::now() + timeout;
-    while (count() < n && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(2ms);
-    return count() >= n;
+    return util::wait_until([&] { return count() >= n; }, std::chrono::duration<double>(timeout).count(), 2ms);
   }
   runtime::Subscription<T>& sub() { return sub_; }
 
@@ -414,8 +413,7 @@ TEST(ReplayDds, EverySampleArrivesExactlyAndInOrderAtFullSpeed) {
 
   const auto start = std::chrono::steady_clock::now();
   replayer.start();
-  const auto deadline = start + 10s;
-  while (!replayer.finished() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(1ms);
+  util::wait_until([&] { return replayer.finished(); }, 10, 1ms);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_TRUE(replayer.finished());
   EXPECT_TRUE(replayer.error().empty()) << replayer.error();
@@ -446,19 +444,24 @@ TEST(ReplayDds, PauseStopsResumeGoesOnSeekJumps) {
   ASSERT_TRUE(replayer.wait_for_readers(5s));
   ASSERT_TRUE(aircraft.sub().wait_for_writers(1, 5s));
   replayer.start();
-  ASSERT_TRUE(aircraft.wait_for(20, 3s));
+  ASSERT_TRUE(aircraft.wait_for(20, 10s));
 
-  replayer.pause();
-  std::this_thread::sleep_for(50ms);  // what was written before the pause is delivered
+  replayer.pause();  // publication has stopped when it returns
+  const std::uint64_t published_at_pause = replayer.published();
+  // What was published before the pause arrives (best effort: one might be lost, so no assert).
+  aircraft.wait_for(published_at_pause, 5s);
   const std::size_t paused_count = aircraft.count();
+  // Paused, time passes and nothing goes out: this look lasts on purpose (what must not happen
+  // has no event to wait for).
   std::this_thread::sleep_for(300ms);
+  EXPECT_EQ(replayer.published(), published_at_pause);
   EXPECT_EQ(aircraft.count(), paused_count);
   EXPECT_LT(paused_count, 150u);
 
   // Seek while paused: the latest state at/before 4.0 s goes out at once, nothing more.
   replayer.seek(4.0);
-  ASSERT_TRUE(aircraft.wait_for(paused_count + 1, 2s));
-  std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(aircraft.wait_for(paused_count + 1, 10s));
+  EXPECT_EQ(replayer.published(), published_at_pause + 1);
   auto received = aircraft.samples();
   ASSERT_EQ(received.size(), paused_count + 1);
   EXPECT_LT(received.back().stamp().sim_time_s(), 4.0);
@@ -466,13 +469,11 @@ TEST(ReplayDds, PauseStopsResumeGoesOnSeekJumps) {
   EXPECT_EQ(replayer.position_s(), 4.0);
 
   replayer.resume();
-  ASSERT_TRUE(aircraft.wait_for(paused_count + 2, 2s));
+  ASSERT_TRUE(aircraft.wait_for(paused_count + 2, 10s));
   received = aircraft.samples();
   EXPECT_EQ(received[paused_count + 1].stamp().frame(), 200u);  // the first at/after 4.0 s
-  const auto deadline = std::chrono::steady_clock::now() + 5s;
-  while (!replayer.finished() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(5ms);
-  ASSERT_TRUE(replayer.finished());
-  ASSERT_TRUE(aircraft.wait_for(paused_count + 1 + 101, 1s));
+  ASSERT_TRUE(util::wait_until([&] { return replayer.finished(); }, 10, 5ms));
+  ASSERT_TRUE(aircraft.wait_for(paused_count + 1 + 101, 10s));
   EXPECT_EQ(aircraft.samples().back().stamp().frame(), 300u);
   fs::remove_all(dir);
 }

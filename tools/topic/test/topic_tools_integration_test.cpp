@@ -172,7 +172,7 @@ TEST(TopicList, WorksForTypesOutsideFedsim) {
     RawSample sample{{0x00, 0x01, 0x00, 0x00, 1, 2, 3, 4}};  // CDR_LE encapsulation + 4 bytes
     while (running.load()) {
       writer->write(&sample);
-      std::this_thread::sleep_for(10ms);
+      std::this_thread::sleep_for(10ms);  // a stream at ~100 Hz (pacing, not waiting)
     }
   });
 

@@ -9,6 +9,7 @@
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/util/child_process.hpp"
+#include "common/util/wait_until.hpp"
 
 #include <fastdds/dds/publisher/Publisher.hpp>
 
@@ -118,14 +119,6 @@ std::unique_ptr<runtime::Subscription<msg::FrameTick>> on_ticks(std::shared_ptr<
       [on_tick](const msg::FrameTick& t, const auto&) { on_tick(t.frame()); });
 }
 
-bool wait_for(const std::function<bool()>& done, double timeout_s) {
-  for (int i = 0; i < timeout_s * 50; ++i) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return done();
-}
-
 // Two writers of aircraft 0: fedsim-io's strength (10) and a trainer's (20). The flight
 // federate warns of the second writer, and from the trainer's first sample on it flies only the
 // trainer's (exclusive ownership), never the two alternately. When the trainer deletes its
@@ -150,7 +143,7 @@ TEST(PilotInputDds, ASecondWriterIsWarnedOfAndOnlyTheStrongerOneFlies) {
     }
   });
   auto flew = [&](float aileron, std::uint64_t after) {
-    return wait_for([&] {
+    return util::wait_until([&] {
       for (const auto& [f, s] : flown.frames()) if (f > after && s.aileron() == aileron) return true;
       return false;
     }, 30);
@@ -163,9 +156,7 @@ TEST(PilotInputDds, ASecondWriterIsWarnedOfAndOnlyTheStrongerOneFlies) {
   }
   ASSERT_TRUE(flew(-0.1f, 0)) << fed.flight->output();
   const std::uint64_t strong_until = last_tick.load() + 100;  // two seconds of both writers
-  while (last_tick.load() < strong_until && fed.timing->running()) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  util::wait_until([&] { return last_tick.load() >= strong_until || !fed.timing->running(); }, 30);
   {
     std::lock_guard lock(trainer_mutex);
     dds->publisher()->delete_datawriter(trainer);
@@ -312,7 +303,7 @@ TEST(PilotInputDds, AnIncompatibleQosWriterIsLoggedWithTopicAndPolicy) {
   auto dds = participant(domain, "test-shared");
   runtime::Publisher<msg::PilotControls> shared(dds, runtime::topics::pilot_controls,
                                                runtime::qos::kLockstepData);
-  EXPECT_TRUE(wait_for([&] { return shared.incompatible_readers() > 0; }, 30));
+  EXPECT_TRUE(util::wait_until([&] { return shared.incompatible_readers() > 0; }, 30));
   const std::string log = fed.finish();
   EXPECT_NE(log.find("topic=fedsim/pilot_controls: a remote writer has QoS incompatible with this "
                      "reader (profile 'pilot_controls'): policy OWNERSHIP"),

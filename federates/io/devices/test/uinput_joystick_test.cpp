@@ -72,11 +72,12 @@ InceptorCalibration calibration() {
                                     "virtual.yaml");
 }
 
-/// Samples until `done` holds (the kernel delivers asynchronously) or 2 s have passed.
+/// Samples until `done` holds (the kernel delivers asynchronously, and udev makes a new device's
+/// node a little after it is created: the source retries opening it) or 5 s have passed.
 template <class Done>
 ControlInputs sample_until(DeviceSource& source, double& t, Done done) {
   ControlInputs in = default_controls();
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 500; ++i) {
     t += 0.01;
     source.sample(t, in);
     if (done(in)) break;
@@ -92,7 +93,6 @@ TEST(UinputJoystick, AVirtualStickFliesThroughEvdevAndSurvivesBeingUnplugged) {
   }
   auto stick = std::make_unique<VirtualStick>();
   ASSERT_TRUE(stick->ok()) << "could not create the uinput device";
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // udev makes the node
   DeviceSource::Options options;
   options.retry_interval_s = 0.05;
   DeviceSource source(evdev_opener("", kName), "named test joystick", calibration(), options);
