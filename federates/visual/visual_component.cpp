@@ -11,7 +11,7 @@
 #include "flight/model/aircraft/aircraft_pack.hpp"
 #include "displays/model/composite.hpp"
 #include "visual/model/channel_file.hpp"
-#include "visual/model/egl_context.hpp"
+#include "common/gl/egl_context.hpp"
 #include "visual/model/eye_extrapolation.hpp"
 
 #include <algorithm>
@@ -272,7 +272,7 @@ void VisualComponent::write_snapshot(const runtime::FrameContext& frame) {
   pending_snapshot_.reset();
   const std::string path = (std::filesystem::path(setup_.snapshot_dir) / (setup_.channel.name + "_" + tag + ".png")).string();
   try {
-    write_png(image_, path);
+    picture::write_png(image_, path);
     ++snapshots_written_;
     log().info("snapshot frame={} t={:.2f}s -> {}", frame.frame, frame.sim_time_s, path);
   } catch (const std::exception& e) {
@@ -286,9 +286,9 @@ void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   const std::int64_t slot = timing::rate_slot(frame.frame, period, setup_.stream_hz);
   if (slot == last_stream_slot_) return;
   last_stream_slot_ = slot;
-  if (setup_.jpeg.downscale > 1) scaled_ = downscale(image_, setup_.jpeg.downscale);
-  const Image& source = setup_.jpeg.downscale > 1 ? scaled_ : image_;
-  encode_jpeg(source, setup_.jpeg, picture_.data());
+  if (setup_.jpeg.downscale > 1) scaled_ = picture::downscale(image_, setup_.jpeg.downscale);
+  const picture::Image& source = setup_.jpeg.downscale > 1 ? scaled_ : image_;
+  picture::encode_jpeg(source, setup_.jpeg, picture_.data());
   if (picture_.data().size() > msg::VISUAL_PICTURE_MAX_BYTES) {
     report_fault("picture_too_large", std::to_string(picture_.data().size()) + " bytes (at most " +
                                           std::to_string(msg::VISUAL_PICTURE_MAX_BYTES) +
@@ -316,7 +316,7 @@ bool VisualComponent::capture_due() {
 void VisualComponent::write_capture() {
   captured_ = true;
   try {
-    write_png(image_, setup_.capture_png);
+    picture::write_png(image_, setup_.capture_png);
     log().info("at {:.0f} ft above the runway (frame {}, t={:.2f}s) -> {}", setup_.capture_agl_m * units::kMToFt,
                image_stamp_.frame(), image_stamp_.sim_time_s(), setup_.capture_png);
   } catch (const std::exception& e) {
@@ -348,7 +348,7 @@ void VisualComponent::on_stop() {
     log().warn("no image was rendered (no aircraft state arrived): {} not written", setup_.final_png);
     return;
   }
-  write_png(image_, setup_.final_png);
+  picture::write_png(image_, setup_.final_png);
   log().info("last image (frame {}, t={:.2f}s) -> {}", image_stamp_.frame(), image_stamp_.sim_time_s(), setup_.final_png);
 }
 
@@ -451,7 +451,7 @@ runtime::FederateProgram program() {
   };
   p.make_component = [o](const runtime::FederateOptions& common) {
     VisualSetup setup;
-    const std::vector<ChannelConfig> channels = load_channels(o->channels);
+    const std::vector<view::ChannelConfig> channels = load_channels(o->channels);
     const std::size_t index = channel_index(channels, o->channel, o->channels);
     setup.channel = channels[index];
     setup.channel_id = static_cast<std::uint16_t>(o->channel_id >= 0 ? o->channel_id : static_cast<int>(index));
@@ -459,9 +459,9 @@ runtime::FederateProgram program() {
     const nav::NavDatabase db = nav::NavDatabase::open(o->navdb.empty() ? nav::default_database_path() : o->navdb);
     const std::vector<nav::RunwayEndRecord> ends = db.airport_runways(o->airport);
     if (ends.empty()) throw std::invalid_argument("--airport " + o->airport + ": no runways in " + db.path());
-    const GlBackend backend = *parse_gl_backend(o->gl);
+    const gl::GlBackend backend = *gl::parse_gl_backend(o->gl);
     setup.renderer = std::make_unique<Renderer>(build_airport_scene(ends, scene_options(db, *o)),
-                                                make_gl_context(backend, &setup.gl_note));
+                                                gl::make_gl_context(backend, &setup.gl_note));
     setup.render_hz = o->render_hz;
     setup.stream_hz = o->stream_hz;
     setup.jpeg = {o->jpeg_quality, o->stream_downscale};
@@ -487,7 +487,7 @@ runtime::FederateProgram program() {
     setup.start_utc_ns = utc_ns();
     setup.state_qos = o->state_qos;
     if (o->hud) {
-      setup.hud = std::make_unique<displays::DisplayRenderer>(make_gl_context(backend), displays::default_font_paths());
+      setup.hud = std::make_unique<displays::DisplayRenderer>(gl::make_gl_context(backend), displays::default_font_paths());
       const nav::RunwayEndRecord& first = ends.front();
       setup.hud_context.magnetic_variation_rad =
           displays::nearby_navaids(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0).magnetic_variation_rad;

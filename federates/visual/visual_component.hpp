@@ -33,9 +33,9 @@
 #include "displays/display_mapping.hpp"
 #include "displays/model/display_renderer.hpp"
 #include "visual/model/airport_scene.hpp"
-#include "visual/model/channel_config.hpp"
+#include "common/view/channel_config.hpp"
 #include "visual/model/environment.hpp"
-#include "visual/model/jpeg_encoder.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/sun_position.hpp"
 
@@ -47,12 +47,12 @@
 namespace fedsim::visual {
 
 struct VisualSetup {
-  ChannelConfig channel;             // the eye-point offset from the pack already added
+  view::ChannelConfig channel;             // the eye-point offset from the pack already added
   std::uint16_t channel_id = 0;      // 0 centre, then left, right...
   std::unique_ptr<Renderer> renderer;
   double render_hz = 30.0;           // images per second of frames (at most one per frame) [Hz]
   double stream_hz = 5.0;            // pictures published per second of frames (0: none) [Hz]
-  JpegOptions jpeg{75, 2};
+  picture::JpegOptions jpeg{75, 2};
   std::string snapshot_dir = ".";    // where snapshot PNGs go
   std::string final_png;             // the last image written here on stop ("" = none)
   // The picture at a height (the decision height of an approach): the first image whose aircraft
@@ -111,7 +111,7 @@ class VisualComponent final : public runtime::Component {
   runtime::Output<msg::VisualChannelStatus>& visual_status_;
   runtime::Output<msg::VisualPicture>& visual_picture_;
   VisualSetup setup_;
-  Image image_;
+  picture::Image image_;
   bool have_image_ = false;
   std::uint64_t state_seen_ = 0;
   bool state_usable_ = false;
@@ -128,8 +128,8 @@ class VisualComponent final : public runtime::Component {
   std::int64_t rate_window_start_ns_ = 0;
   std::uint32_t rate_window_images_ = 0;
   float frame_rate_hz_ = 0.0f;
-  Image scaled_;  // the picture reduced for the stream
-  Image hud_image_;
+  picture::Image scaled_;  // the picture reduced for the stream
+  picture::Image hud_image_;
   msg::VisualChannelStatus status_;
   msg::VisualPicture picture_;
 };

@@ -11,13 +11,13 @@
 // hud_over_ksfo.png: the HUD composited over the image generator's picture of KSFO from the
 // same eye (visual_model, the same ChannelConfig), its flight-path vector on the aiming point.
 // The last line is one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU).
-#include "visual/model/egl_context.hpp"
-#include "visual/model/timing_summary.hpp"
+#include "common/gl/egl_context.hpp"
+#include "common/util/timing_summary.hpp"
 #include "common/units/units.hpp"
 #include "displays/model/composite.hpp"
 #include "displays/model/display_renderer.hpp"
 #include "visual/model/airport_scene.hpp"
-#include "visual/model/osmesa_context.hpp"
+#include "common/gl/osmesa_context.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/ksfo_runways.hpp"
 
@@ -43,16 +43,16 @@ using fedsim::units::kFtToM;
 using fedsim::units::kKtToMps;
 using fedsim::units::kNmToM;
 using namespace fedsim::displays;
-using fedsim::visual::Image;
+using fedsim::picture::Image;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kVariationRad = 13.0 * kDegToRad;  // KSFO, east (the ILS 28R course is 284 M)
 constexpr double kPathRad = 3.0 * kDegToRad;
 constexpr double kAimingPointM = 400.0;  // beyond the threshold (visual_model's scene)
 
-// One summary for both benchmarks (visual/model/timing_summary.hpp).
-using Stats = fedsim::visual::TimingSummary;
-Stats stats_of(std::vector<double> ms) { return fedsim::visual::summarize_ms(std::move(ms)); }
+// One summary for both benchmarks (common/util/timing_summary.hpp).
+using Stats = fedsim::util::TimingSummary;
+Stats stats_of(std::vector<double> ms) { return fedsim::util::summarize_ms(std::move(ms)); }
 
 nlohmann::json to_json(const Stats& s) {
   return {{"median_ms", s.median_ms}, {"p99_ms", s.p99_ms}, {"max_ms", s.max_ms}};
@@ -159,8 +159,8 @@ struct Measured {
   std::size_t triangles = 0;
 };
 
-Measured measure(int warmup, int frames, const std::function<DisplayStats(int, Image&)>& render,
-                 Image& image) {
+Measured measure(int warmup, int frames, const std::function<DisplayStats(int, fedsim::picture::Image&)>& render,
+                 fedsim::picture::Image& image) {
   std::vector<double> wall, inner;
   Measured m;
   for (int i = 0; i < warmup + frames; ++i) {
@@ -195,7 +195,7 @@ fedsim::visual::EyePose eye_on_approach(const fedsim::nav::RunwayEndRecord& end,
   return p;
 }
 
-void write_hud_over_ksfo(const fedsim::visual::ChannelConfig& channel, DisplayRenderer& displays,
+void write_hud_over_ksfo(const fedsim::view::ChannelConfig& channel, DisplayRenderer& displays,
                          const std::string& path) {
   using namespace fedsim::visual;
   const auto ends = test::ksfo_runway_ends();
@@ -216,11 +216,11 @@ void write_hud_over_ksfo(const fedsim::visual::ChannelConfig& channel, DisplayRe
   Environment environment;
   environment.sun_elevation_rad = 35.0 * kDegToRad;
   environment.sun_azimuth_rad = 200.0 * kDegToRad;
-  Image scene, hud;
+  fedsim::picture::Image scene, hud;
   visual.render(channel, eye_on_approach(end28r, a), environment, scene);
   displays.render_hud(hud_inputs(a), channel, hud);
   composite_over(scene, hud);
-  write_png(scene, path);
+  fedsim::picture::write_png(scene, path);
 }
 
 }  // namespace
@@ -256,14 +256,14 @@ int main(int argc, char** argv) {
                                     return e.runway == "28R";
                                   })->heading_true_rad;
     std::string fallback;
-    DisplayRenderer renderer(fedsim::visual::make_gl_context(*fedsim::visual::parse_gl_backend(gl), &fallback),
+    DisplayRenderer renderer(fedsim::gl::make_gl_context(*fedsim::gl::parse_gl_backend(gl), &fallback),
                              default_font_paths(), samples);
     if (!fallback.empty()) std::printf("--gl auto: %s\n", fallback.c_str());
     renderer.set_clock([] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
           .count();
     });
-    fedsim::visual::ChannelConfig channel;
+    fedsim::view::ChannelConfig channel;
     channel.width_px = hw;
     channel.height_px = hh;
     channel.horizontal_fov_rad = hfov_deg * kDegToRad;
@@ -272,22 +272,22 @@ int main(int argc, char** argv) {
     std::printf("fedsim-bench-displays: %s; %d frames each, %d samples\n",
                 renderer.description().c_str(), frames, samples);
 
-    Image pfd, nd, hud;
+    fedsim::picture::Image pfd, nd, hud;
     const Measured mp = measure(
         warmup, frames,
-        [&](int i, Image& image) {
+        [&](int i, fedsim::picture::Image& image) {
           return renderer.render_pfd(pfd_inputs(approach_at(i, runway_heading)), pw, ph, image);
         },
         pfd);
     const Measured mn = measure(
         warmup, frames,
-        [&](int i, Image& image) {
+        [&](int i, fedsim::picture::Image& image) {
           return renderer.render_nd(nd_inputs(approach_at(i, runway_heading)), nw, nh, image);
         },
         nd);
     const Measured mh = measure(
         warmup, frames,
-        [&](int i, Image& image) {
+        [&](int i, fedsim::picture::Image& image) {
           return renderer.render_hud(hud_inputs(approach_at(i, runway_heading)), channel, image);
         },
         hud);
@@ -314,9 +314,9 @@ int main(int argc, char** argv) {
     if (!png_dir.empty()) {
       std::filesystem::create_directories(png_dir);
       const std::filesystem::path dir(png_dir);
-      write_png(pfd, (dir / "pfd.png").string());
-      write_png(nd, (dir / "nd.png").string());
-      write_png(hud, (dir / "hud.png").string());
+      fedsim::picture::write_png(pfd, (dir / "pfd.png").string());
+      fedsim::picture::write_png(nd, (dir / "nd.png").string());
+      fedsim::picture::write_png(hud, (dir / "hud.png").string());
       write_hud_over_ksfo(channel, renderer, (dir / "hud_over_ksfo.png").string());
       std::printf("wrote pfd.png, nd.png, hud.png, hud_over_ksfo.png in %s\n", png_dir.c_str());
     }

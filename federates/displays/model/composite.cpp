@@ -6,7 +6,7 @@
 
 namespace fedsim::displays {
 
-void composite_over(visual::Image& channel, const visual::Image& hud) {
+void composite_over(picture::Image& channel, const picture::Image& hud) {
   if (channel.width_px != hud.width_px || channel.height_px != hud.height_px ||
       channel.rgba.size() != hud.rgba.size()) {
     throw std::invalid_argument("composite_over: the HUD is " + std::to_string(hud.width_px) + "x" +

@@ -3,7 +3,7 @@
 // render_hud() blended over the visual channel's picture it was drawn for.
 #pragma once
 
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 namespace fedsim::displays {
 
@@ -11,6 +11,6 @@ namespace fedsim::displays {
 /// over `channel` of the same size, in place: out = hud + channel * (255 - alpha_hud) / 255,
 /// per channel (alpha too), rounded to nearest. Throws std::invalid_argument naming both sizes
 /// when they differ.
-void composite_over(visual::Image& channel, const visual::Image& hud);
+void composite_over(picture::Image& channel, const picture::Image& hud);
 
 }  // namespace fedsim::displays

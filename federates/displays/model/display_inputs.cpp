@@ -1,7 +1,7 @@
 #include "displays/model/display_inputs.hpp"
 
 #include "common/units/units.hpp"
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <cmath>
 #include <string>
@@ -11,8 +11,8 @@ namespace fedsim::displays {
 namespace {
 
 using units::kDegToRad;
-using visual::reject;
-using visual::require_in_range;
+using util::reject;
+using util::require_in_range;
 
 constexpr double kMaxSpeedMps = 400.0;     // the tapes' top (778 kt)
 constexpr double kMaxTrendMps = 100.0;     // a 10 s speed change beyond this is a bad input

@@ -15,7 +15,7 @@
 // not tuned to that kind of station shows neither scale nor flag (NavSignal::kNotTuned).
 //
 // validate_*() throws std::invalid_argument "<where>: field '<field>': <problem>" for a NaN, an
-// infinity, a value out of its range or a string too long to draw (visual/model/input_checks).
+// infinity, a value out of its range or a string too long to draw (common/util/input_checks).
 #pragma once
 
 #include <Eigen/Core>

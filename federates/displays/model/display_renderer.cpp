@@ -4,10 +4,10 @@
 #include "displays/model/hud.hpp"
 #include "displays/model/nd.hpp"
 #include "displays/model/pfd.hpp"
-#include "visual/model/gl_program.hpp"
-#include "visual/model/input_checks.hpp"
-#include "visual/model/osmesa_context.hpp"
-#include "visual/model/render_target.hpp"
+#include "common/gl/gl_program.hpp"
+#include "common/util/input_checks.hpp"
+#include "common/gl/osmesa_context.hpp"
+#include "common/gl/render_target.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -16,8 +16,8 @@ namespace fedsim::displays {
 
 namespace {
 
-using visual::GlApi;
-using visual::GlProgram;
+using gl::GlApi;
+using gl::GlProgram;
 
 // Pixels (y down) to clip space; each fragment outside its vertex's clip rectangle is dropped.
 const char* const kVertexShader = R"(#version 330 core
@@ -78,17 +78,17 @@ GLuint upload_atlas(const GlApi& gl, const FontAtlas& atlas) {
 }
 
 void check_size(int width_px, int height_px, const char* where) {
-  visual::require_in_range(width_px, 16, 4096, where, "width_px");
-  visual::require_in_range(height_px, 16, 4096, where, "height_px");
+  util::require_in_range(width_px, 16, 4096, where, "width_px");
+  util::require_in_range(height_px, 16, 4096, where, "height_px");
 }
 
 }  // namespace
 
 struct DisplayRenderer::Impl {
-  Impl(std::unique_ptr<visual::GlContext> c, const FontPaths& fonts, int samples_in)
+  Impl(std::unique_ptr<gl::GlContext> c, const FontPaths& fonts, int samples_in)
       : context(std::move(c)),
         gl((context->make_current(),
-            visual::GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
+            gl::GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
         program(gl, "displays", kVertexShader, kFragmentShader),
         atlas(fonts),
         canvas(atlas),
@@ -119,11 +119,11 @@ struct DisplayRenderer::Impl {
   double now_ms() const { return clock ? static_cast<double>(clock()) * 1.0e-6 : 0.0; }
 
   // Draws what the canvas holds into a fresh picture cleared to `background`.
-  DisplayStats finish(const float background[4], visual::Image& image, double start_ms) {
+  DisplayStats finish(const float background[4], picture::Image& image, double start_ms) {
     const int w = canvas.width_px(), h = canvas.height_px();
     if (!target || !target->matches(w, h, samples)) {
       target.reset();
-      target = std::make_unique<visual::RenderTarget>(gl, w, h, samples);
+      target = std::make_unique<gl::RenderTarget>(gl, w, h, samples);
     }
     target->bind_for_drawing();
     gl.ClearColor(background[0], background[1], background[2], background[3]);
@@ -153,7 +153,7 @@ struct DisplayRenderer::Impl {
     return stats;
   }
 
-  std::unique_ptr<visual::GlContext> context;
+  std::unique_ptr<gl::GlContext> context;
   GlApi gl;
   GlProgram program;
   FontAtlas atlas;
@@ -162,8 +162,8 @@ struct DisplayRenderer::Impl {
   GLuint atlas_texture = 0;
   GLuint vao = 0;
   GLuint vbo = 0;
-  std::unique_ptr<visual::RenderTarget> target;
-  visual::FrameClock clock;
+  std::unique_ptr<gl::RenderTarget> target;
+  gl::RenderClock clock;
 };
 
 namespace {
@@ -172,16 +172,16 @@ constexpr float kTransparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 }  // namespace
 
 DisplayRenderer::DisplayRenderer()
-    : DisplayRenderer(std::make_unique<visual::OsMesaContext>(), default_font_paths()) {}
+    : DisplayRenderer(std::make_unique<gl::OsMesaContext>(), default_font_paths()) {}
 
-DisplayRenderer::DisplayRenderer(std::unique_ptr<visual::GlContext> context, const FontPaths& fonts,
+DisplayRenderer::DisplayRenderer(std::unique_ptr<gl::GlContext> context, const FontPaths& fonts,
                                  int samples)
     : impl_(std::make_unique<Impl>(std::move(context), fonts, samples)) {}
 
 DisplayRenderer::~DisplayRenderer() = default;
 
 DisplayStats DisplayRenderer::render_pfd(const PfdInputs& in, int width_px, int height_px,
-                                         visual::Image& image) {
+                                         picture::Image& image) {
   check_size(width_px, height_px, "render_pfd");
   impl_->context->make_current();
   const double start = impl_->now_ms();
@@ -191,7 +191,7 @@ DisplayStats DisplayRenderer::render_pfd(const PfdInputs& in, int width_px, int 
 }
 
 DisplayStats DisplayRenderer::render_nd(const NdInputs& in, int width_px, int height_px,
-                                        visual::Image& image) {
+                                        picture::Image& image) {
   check_size(width_px, height_px, "render_nd");
   impl_->context->make_current();
   const double start = impl_->now_ms();
@@ -200,9 +200,9 @@ DisplayStats DisplayRenderer::render_nd(const NdInputs& in, int width_px, int he
   return impl_->finish(kOpaqueBlack, image, start);
 }
 
-DisplayStats DisplayRenderer::render_hud(const HudInputs& in, const visual::ChannelConfig& channel,
-                                         visual::Image& image) {
-  visual::validate(channel, "render_hud channel");
+DisplayStats DisplayRenderer::render_hud(const HudInputs& in, const view::ChannelConfig& channel,
+                                         picture::Image& image) {
+  view::validate(channel, "render_hud channel");
   check_size(channel.width_px, channel.height_px, "render_hud channel");
   impl_->context->make_current();
   const double start = impl_->now_ms();
@@ -211,7 +211,7 @@ DisplayStats DisplayRenderer::render_hud(const HudInputs& in, const visual::Chan
   return impl_->finish(kTransparent, image, start);
 }
 
-void DisplayRenderer::set_clock(visual::FrameClock clock) { impl_->clock = std::move(clock); }
+void DisplayRenderer::set_clock(gl::RenderClock clock) { impl_->clock = std::move(clock); }
 
 const FontAtlas& DisplayRenderer::atlas() const { return impl_->atlas; }
 

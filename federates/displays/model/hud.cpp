@@ -171,7 +171,7 @@ void draw_heading_scale(Canvas& c, const HudFrame& f, double heading_magnetic_ra
 
 }  // namespace
 
-HudProjection::HudProjection(const visual::ChannelConfig& channel, double roll_rad,
+HudProjection::HudProjection(const view::ChannelConfig& channel, double roll_rad,
                              double pitch_rad, double heading_true_rad) {
   const Eigen::Matrix3d ned_from_body = dcm_from_euler({roll_rad, pitch_rad, heading_true_rad});
   const Eigen::Matrix3d body_from_channel = dcm_from_euler(
@@ -197,7 +197,7 @@ Eigen::Vector3d HudProjection::direction(double azimuth_rad, double elevation_ra
 
 double HudProjection::pixels_per_rad() const { return half_height_px_ / tan_half_v_; }
 
-void draw_hud(Canvas& c, const HudInputs& in, const visual::ChannelConfig& channel) {
+void draw_hud(Canvas& c, const HudInputs& in, const view::ChannelConfig& channel) {
   validate(in, "HUD inputs");
   const HudProjection projection(channel, in.roll_rad, in.pitch_rad, in.heading_true_rad);
   const Vec2 along = horizon_direction(projection, in.heading_true_rad);

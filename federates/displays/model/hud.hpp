@@ -20,7 +20,7 @@
 
 #include "displays/model/canvas.hpp"
 #include "displays/model/display_inputs.hpp"
-#include "visual/model/channel_config.hpp"
+#include "common/view/channel_config.hpp"
 
 #include <Eigen/Core>
 
@@ -30,7 +30,7 @@ namespace fedsim::displays {
 
 class HudProjection {
  public:
-  HudProjection(const visual::ChannelConfig& channel, double roll_rad, double pitch_rad,
+  HudProjection(const view::ChannelConfig& channel, double roll_rad, double pitch_rad,
                 double heading_true_rad);
 
   /// Pixel position of a direction given in NED; std::nullopt when it is not in front of the
@@ -51,6 +51,6 @@ class HudProjection {
 };
 
 /// Draws the HUD for the channel into `canvas` (reset to the channel's size first).
-void draw_hud(Canvas& canvas, const HudInputs& in, const visual::ChannelConfig& channel);
+void draw_hud(Canvas& canvas, const HudInputs& in, const view::ChannelConfig& channel);
 
 }  // namespace fedsim::displays

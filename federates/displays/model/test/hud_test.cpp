@@ -23,8 +23,8 @@ using units::kDegToRad;
 
 const GeodeticPosition kOrigin{37.6 * kDegToRad, -122.4 * kDegToRad, 10.0};
 
-visual::ChannelConfig channel_400x300() {
-  visual::ChannelConfig c;
+view::ChannelConfig channel_400x300() {
+  view::ChannelConfig c;
   c.width_px = 400;
   c.height_px = 300;
   c.horizontal_fov_rad = 40.0 * kDegToRad;
@@ -33,7 +33,7 @@ visual::ChannelConfig channel_400x300() {
 }
 
 // The visual channel's camera for an eye at the scene origin, 500 m up.
-visual::ChannelCamera camera(const visual::ChannelConfig& channel, double roll, double pitch,
+visual::ChannelCamera camera(const view::ChannelConfig& channel, double roll, double pitch,
                              double heading) {
   const visual::SceneFrame frame(kOrigin);
   visual::EyePose eye;
@@ -68,7 +68,7 @@ TEST(Hud, ProjectionEqualsTheChannelCamera) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int compared = 0;
   for (int k = 0; k < 200; ++k) {
-    visual::ChannelConfig channel = channel_400x300();
+    view::ChannelConfig channel = channel_400x300();
     channel.heading_offset_rad = u(random) * 50.0 * kDegToRad;
     channel.pitch_offset_rad = u(random) * 10.0 * kDegToRad;
     channel.roll_offset_rad = u(random) * 5.0 * kDegToRad;
@@ -88,7 +88,7 @@ TEST(Hud, ProjectionEqualsTheChannelCamera) {
 }
 
 TEST(Hud, HorizonWhereTheCameraProjectsIt) {
-  const visual::ChannelConfig channel = channel_400x300();
+  const view::ChannelConfig channel = channel_400x300();
   HudInputs in;
   in.pitch_rad = 4.0 * kDegToRad;
   in.roll_rad = 10.0 * kDegToRad;
@@ -99,8 +99,8 @@ TEST(Hud, HorizonWhereTheCameraProjectsIt) {
   renderer().render_hud(in, channel, image);
   write_png(image, (output_dir() / "hud_horizon.png").string());
   const visual::ChannelCamera cam = camera(channel, in.roll_rad, in.pitch_rad, in.heading_true_rad);
-  const visual::ChannelConfig pitched = [&] {
-    visual::ChannelConfig c = channel;
+  const view::ChannelConfig pitched = [&] {
+    view::ChannelConfig c = channel;
     c.pitch_offset_rad = 1.0 * kDegToRad;
     return c;
   }();
@@ -123,7 +123,7 @@ TEST(Hud, HorizonWhereTheCameraProjectsIt) {
 }
 
 TEST(Hud, FlightPathVectorWhereTheCameraProjectsTheVelocity) {
-  const visual::ChannelConfig channel = channel_400x300();
+  const view::ChannelConfig channel = channel_400x300();
   HudInputs in;
   in.pitch_rad = 4.0 * kDegToRad;
   in.heading_true_rad = 100.0 * kDegToRad;
@@ -155,7 +155,7 @@ TEST(Hud, FlightPathVectorWhereTheCameraProjectsTheVelocity) {
   EXPECT_NEAR(measured.y(), expected.y(), 1.0);
   std::printf("FPV at (%.2f, %.2f), the camera (%.2f, %.2f) px\n", measured.x(), measured.y(),
               expected.x(), expected.y());
-  visual::ChannelConfig pitched = channel;
+  view::ChannelConfig pitched = channel;
   pitched.pitch_offset_rad = 1.0 * kDegToRad;
   const Vec2 wrong =
       camera_pixel(camera(pitched, 0.0, in.pitch_rad, in.heading_true_rad), in.velocity_ned_mps);
@@ -163,7 +163,7 @@ TEST(Hud, FlightPathVectorWhereTheCameraProjectsTheVelocity) {
 }
 
 TEST(Hud, TransparentAwayFromTheSymbology) {
-  const visual::ChannelConfig channel = channel_400x300();
+  const view::ChannelConfig channel = channel_400x300();
   HudInputs in;
   in.pitch_rad = 2.0 * kDegToRad;
   in.velocity_ned_mps = {70.0, 0.0, 3.0};
@@ -215,7 +215,7 @@ TEST(Hud, CompositeOverBlendsPremultipliedAlpha) {
 }
 
 TEST(Hud, RenderedHudOverAPicture) {
-  const visual::ChannelConfig channel = channel_400x300();
+  const view::ChannelConfig channel = channel_400x300();
   HudInputs in;
   in.velocity_ned_mps = {70.0, 0.0, 3.0};
   in.ias_mps = 70.0;
@@ -252,7 +252,7 @@ TEST(Hud, BadInputsNameTheField) {
     EXPECT_NE(std::string(e.what()).find("field 'velocity_ned_mps[2]'"), std::string::npos);
   }
   in.velocity_ned_mps.z() = 0.0;
-  visual::ChannelConfig bad = channel_400x300();
+  view::ChannelConfig bad = channel_400x300();
   bad.horizontal_fov_rad = -1.0;
   EXPECT_THROW(renderer().render_hud(in, bad, image), std::invalid_argument);
   EXPECT_NO_THROW(renderer().render_hud(in, channel_400x300(), image));

@@ -5,7 +5,7 @@
 
 #include "displays/model/canvas.hpp"
 #include "displays/model/display_renderer.hpp"
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -16,8 +16,8 @@
 
 namespace fedsim::displays::test {
 
-using visual::Image;
-using visual::Rgba8;
+using picture::Image;
+using picture::Rgba8;
 
 inline DisplayRenderer& renderer() {
   static DisplayRenderer r;

@@ -34,7 +34,7 @@ TEST(ChannelFile, TheShippedFilesLoad) {
   // Edge to edge: the side channels turn by one full horizontal field of view.
   EXPECT_NEAR(three[0].heading_offset_rad, -three[1].horizontal_fov_rad, 1e-12);
   EXPECT_NEAR(three[2].heading_offset_rad, three[1].horizontal_fov_rad, 1e-12);
-  const ChannelConfig right =
+  const view::ChannelConfig right =
       load_channel(fedsim::util::test_data_dir() + "/../../data/visual/three_channels.yaml", "right");
   EXPECT_EQ(right.name, "right");
 }

@@ -1,11 +1,11 @@
-#include "visual/model/image_compare.hpp"
+#include "common/picture/image_compare.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 
 std::string ImageDifference::describe() const {
   char text[96];
@@ -37,4 +37,4 @@ ImageDifference compare_images(const Image& a, const Image& b, int pixel_thresho
   return d;
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 class GlContext {
  public:
@@ -18,4 +18,4 @@ class GlContext {
   virtual std::string description() const = 0;
 };
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

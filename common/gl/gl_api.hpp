@@ -12,7 +12,7 @@
 
 #include <functional>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 using GlProcLoader = std::function<void*(const char* name)>;
 
@@ -95,4 +95,4 @@ struct GlApi {
   void check(const char* what) const;
 };
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

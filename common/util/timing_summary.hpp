@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::util {
 
 struct TimingSummary {
   double median_ms = 0.0, p99_ms = 0.0, max_ms = 0.0, mean_ms = 0.0;
@@ -14,4 +14,4 @@ struct TimingSummary {
 /// The summary of `ms` (one value per frame); all zero for none.
 TimingSummary summarize_ms(std::vector<double> ms);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::util

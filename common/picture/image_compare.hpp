@@ -8,11 +8,11 @@
 // A picture matches when both are within their limits (ImageTolerance).
 #pragma once
 
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 #include <string>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 
 struct ImageTolerance {
   double max_mean_abs_diff = 2.0;        // [levels of 255]
@@ -32,4 +32,4 @@ struct ImageDifference {
 /// Throws std::invalid_argument naming both sizes when they differ.
 ImageDifference compare_images(const Image& a, const Image& b, int pixel_threshold = ImageTolerance{}.pixel_threshold);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

@@ -1,9 +1,9 @@
-#include "visual/model/gl_program.hpp"
+#include "common/gl/gl_program.hpp"
 
 #include <stdexcept>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 namespace {
 
@@ -76,4 +76,4 @@ void GlProgram::set(const char* name, const Eigen::Matrix4f& m) const {
   gl_->UniformMatrix4fv(location(name), 1, GL_FALSE, m.data());
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

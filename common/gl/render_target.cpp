@@ -1,9 +1,9 @@
-#include "visual/model/render_target.hpp"
+#include "common/gl/render_target.hpp"
 
 #include <cstring>
 #include <stdexcept>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 namespace {
 
@@ -62,7 +62,7 @@ void RenderTarget::bind_for_drawing() const {
   gl_->Viewport(0, 0, width_, height_);
 }
 
-void RenderTarget::read(Image& image) {
+void RenderTarget::read(picture::Image& image) {
   GLuint source = draw_framebuffer_;
   if (resolve_framebuffer_ != 0) {
     gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, draw_framebuffer_);
@@ -76,7 +76,7 @@ void RenderTarget::read(Image& image) {
   gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_.data());
   gl_->check("read back");
-  if (image.width_px != width_ || image.height_px != height_) image = Image(width_, height_);
+  if (image.width_px != width_ || image.height_px != height_) image = picture::Image(width_, height_);
   const std::size_t row_bytes = static_cast<std::size_t>(width_) * 4;
   for (int row = 0; row < height_; ++row) {
     std::memcpy(image.rgba.data() + row * row_bytes,
@@ -84,4 +84,4 @@ void RenderTarget::read(Image& image) {
   }
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

@@ -2,13 +2,13 @@
 // std::runtime_error with the program's name and the driver's log.
 #pragma once
 
-#include "visual/model/gl_api.hpp"
+#include "common/gl/gl_api.hpp"
 
 #include <Eigen/Core>
 
 #include <string>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 class GlProgram {
  public:
@@ -34,4 +34,4 @@ class GlProgram {
   GLuint program_ = 0;
 };
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

@@ -1,10 +1,10 @@
-#include "visual/model/gl_api.hpp"
+#include "common/gl/gl_api.hpp"
 
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 namespace {
 
@@ -36,4 +36,4 @@ void GlApi::check(const char* what) const {
   }
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

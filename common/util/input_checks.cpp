@@ -1,10 +1,10 @@
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-namespace fedsim::visual {
+namespace fedsim::util {
 
 void reject(std::string_view where, std::string_view field, const std::string& problem) {
   throw std::invalid_argument(std::string(where) + ": field '" + std::string(field) +
@@ -29,4 +29,4 @@ void require_in_range(int value, int lo, int hi, std::string_view where, std::st
   }
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::util

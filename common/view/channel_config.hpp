@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::view {
 
 struct ChannelConfig {
   std::string name = "centre";
@@ -43,4 +43,4 @@ void validate(const ChannelConfig& config, std::string_view where);
 /// centre's everything else, names "left", "centre", "right".
 std::vector<ChannelConfig> three_channel_layout(const ChannelConfig& centre);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::view

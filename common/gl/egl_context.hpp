@@ -10,14 +10,14 @@
 // failed otherwise), kAuto (EGL on a hardware device when there is one, else OSMesa).
 #pragma once
 
-#include "visual/model/gl_context.hpp"
+#include "common/gl/gl_context.hpp"
 
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 class EglContext final : public GlContext {
  public:
@@ -49,4 +49,4 @@ std::optional<GlBackend> parse_gl_backend(std::string_view text);
 /// OSMesa; `fallback_note` (optional) receives why EGL was not used.
 std::unique_ptr<GlContext> make_gl_context(GlBackend backend, std::string* fallback_note = nullptr);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

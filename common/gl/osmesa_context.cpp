@@ -1,10 +1,10 @@
-#include "visual/model/osmesa_context.hpp"
+#include "common/gl/osmesa_context.hpp"
 
 #include <GL/osmesa.h>
 
 #include <stdexcept>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 namespace {
 constexpr int kSurfacePx = 16;  // the context's own buffer; frames go to framebuffer objects
@@ -62,4 +62,4 @@ std::string OsMesaContext::description() const {
   return "OSMesa: " + text(GL_VERSION) + ", " + text(GL_RENDERER);
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

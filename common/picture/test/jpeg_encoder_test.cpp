@@ -1,13 +1,13 @@
 // The live picture's JPEG: a rendered-like picture survives the round trip within JPEG's
 // error, the downscale is the block mean, and bad options are refused.
-#include "visual/model/jpeg_encoder.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 namespace {
 
 Image gradient(int w, int h) {
@@ -67,4 +67,4 @@ TEST(Jpeg, BadOptionsAndDataAreRefused) {
 }
 
 }  // namespace
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

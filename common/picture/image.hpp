@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 
 struct Rgba8 {
   std::uint8_t r = 0, g = 0, b = 0, a = 0;
@@ -34,4 +34,4 @@ void write_png(const Image& image, const std::string& path);
 /// std::runtime_error naming the path for a missing or malformed file.
 Image read_png(const std::string& path);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

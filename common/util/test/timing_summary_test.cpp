@@ -1,9 +1,9 @@
 // The benchmarks' one summary of frame times: median, nearest-rank p99, max, mean.
-#include "visual/model/timing_summary.hpp"
+#include "common/util/timing_summary.hpp"
 
 #include <gtest/gtest.h>
 
-namespace fedsim::visual {
+namespace fedsim::util {
 namespace {
 
 TEST(TimingSummary, MedianNearestRankP99MaxAndMean) {
@@ -19,4 +19,4 @@ TEST(TimingSummary, MedianNearestRankP99MaxAndMean) {
 }
 
 }  // namespace
-}  // namespace fedsim::visual
+}  // namespace fedsim::util

@@ -7,14 +7,14 @@
 // Throws std::runtime_error when the context cannot be made.
 #pragma once
 
-#include "visual/model/gl_context.hpp"
+#include "common/gl/gl_context.hpp"
 
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 class OsMesaContext final : public GlContext {
  public:
@@ -33,4 +33,4 @@ class OsMesaContext final : public GlContext {
   std::vector<std::uint8_t> surface_;  // the OSMesa colour buffer (kSurfacePx square, RGBA)
 };
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

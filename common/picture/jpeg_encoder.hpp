@@ -4,12 +4,12 @@
 // picture stays well inside one DDS sample.
 #pragma once
 
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 #include <cstdint>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 
 struct JpegOptions {
   int quality = 75;     // libjpeg quality 1..100
@@ -30,4 +30,4 @@ void encode_jpeg(const Image& image, const JpegOptions& options, std::vector<std
 /// std::runtime_error for malformed data.
 Image decode_jpeg(const std::uint8_t* data, std::size_t size);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

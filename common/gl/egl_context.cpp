@@ -1,16 +1,16 @@
-#include "visual/model/egl_context.hpp"
+#include "common/gl/egl_context.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/gl.h>
 
-#include "visual/model/osmesa_context.hpp"
+#include "common/gl/osmesa_context.hpp"
 
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 namespace {
 
 std::string egl_error(const char* call) {
@@ -163,4 +163,4 @@ std::unique_ptr<GlContext> make_gl_context(GlBackend backend, std::string* fallb
   throw std::invalid_argument("make_gl_context: unknown backend");
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

@@ -1,4 +1,4 @@
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 #include <png.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 
 Image::Image(int width, int height) : width_px(width), height_px(height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("Image: size must be positive");
@@ -143,4 +143,4 @@ Image read_png(const std::string& path) {
   return image;
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

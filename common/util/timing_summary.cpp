@@ -1,10 +1,10 @@
-#include "visual/model/timing_summary.hpp"
+#include "common/util/timing_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-namespace fedsim::visual {
+namespace fedsim::util {
 
 TimingSummary summarize_ms(std::vector<double> ms) {
   TimingSummary s;
@@ -18,4 +18,4 @@ TimingSummary summarize_ms(std::vector<double> ms) {
   return s;
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::util

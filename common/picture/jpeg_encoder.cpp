@@ -1,4 +1,4 @@
-#include "visual/model/jpeg_encoder.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 
 #include <csetjmp>
 #include <cstdio>
@@ -9,7 +9,7 @@
 
 #include <jpeglib.h>
 
-namespace fedsim::visual {
+namespace fedsim::picture {
 namespace {
 
 // libjpeg reports errors through error_exit, which by default exits the process: this one
@@ -130,4 +130,4 @@ Image decode_jpeg(const std::uint8_t* data, std::size_t size) {
   return image;
 }
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::picture

@@ -2,12 +2,12 @@
 // needs the float), multisampled when asked, with a single-sampled copy to read back from.
 #pragma once
 
-#include "visual/model/gl_api.hpp"
-#include "visual/model/image.hpp"
+#include "common/gl/gl_api.hpp"
+#include "common/picture/image.hpp"
 
 #include <vector>
 
-namespace fedsim::visual {
+namespace fedsim::gl {
 
 class RenderTarget {
  public:
@@ -18,7 +18,7 @@ class RenderTarget {
 
   void bind_for_drawing() const;
   /// Resolves the samples (if any) and reads the picture into `image`, rows from the top.
-  void read(Image& image);
+  void read(picture::Image& image);
   bool matches(int width_px, int height_px, int samples) const {
     return width_ == width_px && height_ == height_px && samples_ == samples;
   }
@@ -36,4 +36,4 @@ class RenderTarget {
   std::vector<std::uint8_t> bottom_up_;  // glReadPixels' row order
 };
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::gl

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace fedsim::visual {
+namespace fedsim::util {
 
 /// Throws unless lo <= value <= hi and value is finite; `unit` is shown with the numbers.
 /// Allocation-free unless it throws (the checks run every frame).
@@ -16,4 +16,4 @@ void require_in_range(int value, int lo, int hi, std::string_view where, std::st
 [[noreturn]] void reject(std::string_view where, std::string_view field,
                          const std::string& problem);
 
-}  // namespace fedsim::visual
+}  // namespace fedsim::util
