@@ -5,7 +5,7 @@
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
 #include "common/gl/egl_context.hpp"
-#include "visual/visual_component.hpp"
+#include "common/picture/snapshot_tag.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -70,7 +70,7 @@ void DisplaysComponent::on_command(const msg::SimCommand& command) {
   for (std::size_t i = 0; i < drawn_.size(); ++i) {
     if (!target.empty() && target != setup_.displays[i].name) continue;
     mine = true;
-    if (const auto problem = visual::snapshot_tag_problem(tag)) {
+    if (const auto problem = picture::snapshot_tag_problem(tag)) {
       report_fault("command_rejected", "command seq=" + std::to_string(command.sequence_number()) + ": " + *problem);
       return;
     }

@@ -3,6 +3,7 @@
 
 #include "common/frame_clock/rate_slot.hpp"
 #include "common/navdb/nav_database.hpp"
+#include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
@@ -62,14 +63,6 @@ UtcTime advanced(UtcTime t, double span_s) {
 }
 
 }  // namespace
-
-std::optional<std::string> snapshot_tag_problem(const std::string& tag) {
-  if (tag.size() > 48) return "snapshot tag longer than 48 characters";
-  if (tag.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
-    return "snapshot tag '" + tag + "': only [A-Za-z0-9_-] (it becomes part of a file name)";
-  }
-  return std::nullopt;
-}
 
 std::optional<std::string> apply_weather(const msg::WeatherSettings& w, Environment& environment) {
   Environment next = environment;
@@ -161,7 +154,7 @@ void VisualComponent::on_command(const msg::SimCommand& command) {
       if (!target.empty() && target != setup_.channel.name) return;
       if (static_cast<std::int64_t>(command.snapshot().issued_utc_ns()) < setup_.start_utc_ns) return;  // history
       const std::string tag = command.snapshot().tag().to_string();
-      problem = snapshot_tag_problem(tag);
+      problem = picture::snapshot_tag_problem(tag);
       if (!problem) pending_snapshot_ = tag;
       break;
     }

@@ -71,8 +71,6 @@ struct VisualSetup {
   std::string gl_note;                             // why --gl auto fell back to OSMesa ("" = it did not)
 };
 
-/// A snapshot tag is [A-Za-z0-9_-]{0,48} (it becomes part of a file name); the problem or nullopt.
-std::optional<std::string> snapshot_tag_problem(const std::string& tag);
 /// The environment after a weather command (visibility <= 0: unchanged; cloud base <= 0: no
 /// cloud, else a 1000 m deep layer from that height above the airport), or the problem.
 std::optional<std::string> apply_weather(const msg::WeatherSettings& weather, Environment& environment);

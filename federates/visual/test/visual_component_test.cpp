@@ -328,11 +328,7 @@ TEST(VisualHud, TheHudIsCompositedOverTheChannelWhereTheCameraLooks) {
   }
 }
 
-TEST(VisualHelpers, SnapshotTagsAndWeather) {
-  EXPECT_FALSE(snapshot_tag_problem("approach_1-2"));
-  EXPECT_FALSE(snapshot_tag_problem(""));
-  EXPECT_TRUE(snapshot_tag_problem("a/b"));
-  EXPECT_TRUE(snapshot_tag_problem(std::string(49, 'a')));
+TEST(VisualHelpers, Weather) {
   Environment e;
   msg::WeatherSettings w;
   w.visibility_m(800.0);
