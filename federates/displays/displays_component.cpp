@@ -103,7 +103,7 @@ bool DisplaysComponent::check_new_state(const runtime::FrameContext& frame) {
 
 void DisplaysComponent::render_all(const runtime::FrameContext& frame) {
   const msg::AircraftState& state = *aircraft_state_.latest();
-  DisplayContext context;
+  symbology_mapping::DisplayContext context;
   std::vector<Navaid> navaids;
   if (setup_.navdb) {
     NearbyNavaids near = nearby_navaids(*setup_.navdb, state.latitude_rad(), state.longitude_rad(), setup_.nd_range_nm);
@@ -321,7 +321,7 @@ runtime::FederateProgram program() {
     setup.state_qos = o->state_qos;
     setup.read_autopilot = !o->no_autopilot;
     setup.renderer = std::make_unique<DisplayRenderer>(
-        gl::make_gl_context(*gl::parse_gl_backend(o->gl), &setup.gl_note), default_font_paths(), o->samples);
+        gl::make_gl_context(*gl::parse_gl_backend(o->gl), &setup.gl_note), symbology::default_font_paths(), o->samples);
     return std::unique_ptr<runtime::Component>(std::make_unique<DisplaysComponent>(common.name, std::move(setup)));
   };
   return p;

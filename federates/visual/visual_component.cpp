@@ -10,7 +10,7 @@
 #include "flight/federate/start_options.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
-#include "displays/model/composite.hpp"
+#include "common/hud/composite.hpp"
 #include "visual/model/channel_file.hpp"
 #include "common/gl/egl_context.hpp"
 #include "visual/model/eye_extrapolation.hpp"
@@ -223,16 +223,16 @@ std::optional<VisualComponent::Drawn> VisualComponent::render(const runtime::Fra
 }
 
 void VisualComponent::draw_hud(const msg::AircraftState& state, const EyePose& eye) {
-  displays::HudInputs in = displays::hud_inputs(state, navigation_state_->latest(), autopilot_state_->latest(),
-                                                setup_.hud_context);
+  hud::HudInputs in = symbology_mapping::hud_inputs(state, navigation_state_->latest(), autopilot_state_->latest(),
+                                                    setup_.hud_context);
   // The attitude the scene was drawn with (carried forward to the display time), so that the
   // conformal symbols fall on the scene's horizon and runway.
   in.pitch_rad = eye.theta_rad;
   in.roll_rad = eye.phi_rad;
   in.heading_true_rad = std::fmod(eye.psi_rad + 2.0 * units::kTwoPi, units::kTwoPi);
   try {
-    setup_.hud->render_hud(in, setup_.channel, hud_image_);
-    displays::composite_over(image_, hud_image_);
+    setup_.hud->render(in, setup_.channel, hud_image_);
+    hud::composite_over(image_, hud_image_);
   } catch (const std::invalid_argument& e) {
     report_fault("input_rejected", std::string("HUD not drawn: ") + e.what());
   }
@@ -480,10 +480,10 @@ runtime::FederateProgram program() {
     setup.start_utc_ns = utc_ns();
     setup.state_qos = o->state_qos;
     if (o->hud) {
-      setup.hud = std::make_unique<displays::DisplayRenderer>(gl::make_gl_context(backend), displays::default_font_paths());
+      setup.hud = std::make_unique<hud::HudRenderer>(gl::make_gl_context(backend), symbology::default_font_paths());
       const nav::RunwayEndRecord& first = ends.front();
       setup.hud_context.magnetic_variation_rad =
-          displays::nearby_navaids(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0).magnetic_variation_rad;
+          symbology_mapping::magnetic_variation_near(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0);
     }
     return std::unique_ptr<runtime::Component>(std::make_unique<VisualComponent>(common.name, std::move(setup)));
   };

@@ -10,9 +10,9 @@
 //   commands weather (visibility, cloud base), time of day (sun, lights), snapshot (a PNG)
 //   with --hud also reads fedsim/autopilot_state and fedsim/navigation_state (the FD cue)
 //
-// HUD (--hud, seed 5.9): the displays model's HUD (federates/displays) drawn for this channel's
-// camera (its ChannelConfig: size, field of view, offsets) from the same extrapolated eye
-// attitude the scene was drawn with, composited over the picture (premultiplied "over") before
+// HUD (--hud, seed 5.9): common/hud's HUD (in the cockpit displays' symbology) drawn for this
+// channel's camera (its ChannelConfig: size, field of view, offsets) from the same extrapolated
+// eye attitude the scene was drawn with, composited over the picture (premultiplied "over") before
 // it is published, snapshot or written, so that the flight-path vector and the horizon line
 // lie on the scene's.
 //
@@ -30,8 +30,8 @@
 
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
-#include "displays/display_mapping.hpp"
-#include "displays/model/display_renderer.hpp"
+#include "common/hud/hud_renderer.hpp"
+#include "common/symbology_mapping/symbology_mapping.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "common/view/channel_config.hpp"
 #include "visual/model/environment.hpp"
@@ -66,8 +66,8 @@ struct VisualSetup {
   bool time_of_day_set = true;       // false: the environment's own sun stays
   std::int64_t start_utc_ns = 0;     // snapshot requests issued before this are history
   std::string state_qos;             // profile of the aircraft-state reader ("" = catalogue)
-  std::unique_ptr<displays::DisplayRenderer> hud;  // the HUD drawn over the picture (null: none)
-  displays::DisplayContext hud_context;            // the magnetic variation its heading scale uses
+  std::unique_ptr<hud::HudRenderer> hud;            // the HUD drawn over the picture (null: none)
+  symbology_mapping::DisplayContext hud_context;   // the magnetic variation its heading scale uses
   std::string gl_note;                             // why --gl auto fell back to OSMesa ("" = it did not)
 };
 

@@ -1,7 +1,7 @@
 #include "displays/model/nd.hpp"
 
+#include "common/symbology/palette.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,20 @@
 
 namespace fedsim::displays {
 
+using symbology::Align;
+using symbology::Canvas;
+using symbology::Colour;
+using symbology::Face;
+using symbology::Rect;
+using symbology::Transform;
+using symbology::Vec2;
+using symbology::polar;
+
 namespace {
 
 using units::kDegToRad;
 using units::kRadToDeg;
-namespace colour = palette;
+namespace colour = symbology::palette;
 
 constexpr double kDesign = 1000.0;
 const Vec2 kCentre{500.0, 560.0};

@@ -1,7 +1,7 @@
 #include "displays/model/pfd.hpp"
 
+#include "common/symbology/palette.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,21 @@
 
 namespace fedsim::displays {
 
+using symbology::Align;
+using symbology::Canvas;
+using symbology::Colour;
+using symbology::Face;
+using symbology::FlightDirector;
+using symbology::Rect;
+using symbology::Transform;
+using symbology::Vec2;
+using symbology::polar;
+
 namespace {
 
 using units::kDegToRad;
 using units::kRadToDeg;
-namespace colour = palette;
+namespace colour = symbology::palette;
 
 // Design-unit geometry (pfd.hpp): one place, so that the layout and the drawing agree.
 constexpr double kDesign = 1000.0;

@@ -21,6 +21,7 @@
 namespace fedsim::displays {
 namespace {
 
+using symbology::Rect;
 using units::kDegToRad;
 
 class StateWriter final : public runtime::Component {

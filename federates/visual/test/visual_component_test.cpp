@@ -270,7 +270,7 @@ TEST_F(VisualComponentTest, ANanStateIsRejectedAndTheLastPictureStays) {
   EXPECT_GT(observer_.status.frames_rendered(), rendered);  // good samples render again
 }
 
-// --hud: the displays model's HUD drawn for this channel over its picture. The same state drawn
+// --hud: common/hud's HUD drawn for this channel over its picture. The same state drawn
 // with and without it: the HUD's green symbology appears (none of the scene's pixels is that
 // green), the flight-path vector's ring is centred where the channel camera projects the
 // velocity (the aircraft flies the 3 deg path: the FPV sits 3 deg below the horizon; the scene
@@ -283,7 +283,7 @@ picture::Image render_once(bool hud) {
   VisualSetup setup = small_setup(dir.string());
   setup.channel.width_px = 320;
   setup.channel.height_px = 240;
-  if (hud) setup.hud = std::make_unique<displays::DisplayRenderer>();
+  if (hud) setup.hud = std::make_unique<hud::HudRenderer>();
   VisualComponent visual("visual", std::move(setup));
   runtime::Composition composition({});
   composition.add(writer);

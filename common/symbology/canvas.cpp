@@ -1,4 +1,4 @@
-#include "displays/model/canvas.hpp"
+#include "common/symbology/canvas.hpp"
 
 #include "common/units/units.hpp"
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 
 double Transform::scale() const {
   return std::sqrt(std::abs(linear(0, 0) * linear(1, 1) - linear(0, 1) * linear(1, 0)));
@@ -207,4 +207,4 @@ double Canvas::text(std::string_view text, const Vec2& anchor, double cap_height
   return width;
 }
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

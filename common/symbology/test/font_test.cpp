@@ -1,13 +1,13 @@
 // FreeType rasterises the DejaVu faces into the atlas: real glyphs with coverage, a blank
 // space, monospaced digits in the mono face (readouts keep their columns), and a missing font
 // named in the error.
-#include "displays/model/font_atlas.hpp"
+#include "common/symbology/font_atlas.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 namespace {
 
 long coverage_sum(const FontAtlas& atlas, const Glyph& g) {
@@ -60,4 +60,4 @@ TEST(FontAtlas, MissingFontIsNamed) {
 }
 
 }  // namespace
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

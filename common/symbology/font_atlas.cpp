@@ -1,4 +1,4 @@
-#include "displays/model/font_atlas.hpp"
+#include "common/symbology/font_atlas.hpp"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -8,7 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 
 namespace {
 
@@ -124,4 +124,4 @@ double FontAtlas::advance(Face face, std::string_view text) const {
   return sum;
 }
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

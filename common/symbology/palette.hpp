@@ -5,9 +5,9 @@
 // colours, so each is distinct in hue.
 #pragma once
 
-#include "displays/model/canvas.hpp"
+#include "common/symbology/canvas.hpp"
 
-namespace fedsim::displays::palette {
+namespace fedsim::symbology::palette {
 
 inline constexpr Colour kWhite{1.0f, 1.0f, 1.0f, 1.0f};
 inline constexpr Colour kBlack{0.0f, 0.0f, 0.0f, 1.0f};
@@ -21,4 +21,4 @@ inline constexpr Colour kGround{0.55f, 0.32f, 0.12f, 1.0f};
 inline constexpr Colour kTape{0.32f, 0.34f, 0.38f, 1.0f};
 inline constexpr Colour kHudGreen{0.2f, 1.0f, 0.35f, 1.0f};
 
-}  // namespace fedsim::displays::palette
+}  // namespace fedsim::symbology::palette

@@ -1,5 +1,5 @@
-// fedsim-bench-displays: render time per frame of the cockpit displays (displays_model): the
-// PFD and ND at 800x800 and the HUD at 800x600 (--pfd-size, --nd-size, --hud-size), on an ILS
+// fedsim-bench-displays: render time per frame of the cockpit displays (displays_model) and the
+// head-up display (common/hud): the PFD and ND at 800x800 and the HUD at 800x600 (--pfd-size, --nd-size, --hud-size), on an ILS
 // approach to KSFO 28R (localizer and glide slope captured, flight director and autopilot on,
 // outer marker, SFO and OAK on the ND). Every frame moves the aircraft a little (pitch, bank,
 // heading, speed, altitude), so that no two frames are alike.
@@ -10,14 +10,15 @@
 // max. --png DIR writes the last frame of each as pfd.png, nd.png, hud.png, and
 // hud_over_ksfo.png: the HUD composited over the image generator's picture of KSFO from the
 // same eye (visual_model, the same ChannelConfig), its flight-path vector on the aiming point.
-// The last line is one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU).
+// The last line is one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU). A
+// benchmark beside the federates (bench/): it composes two of them, as fedsim-visual --hud does.
 #include "common/gl/egl_context.hpp"
-#include "common/util/timing_summary.hpp"
+#include "common/hud/composite.hpp"
+#include "common/hud/hud_renderer.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/composite.hpp"
+#include "common/util/timing_summary.hpp"
 #include "displays/model/display_renderer.hpp"
 #include "visual/model/airport_scene.hpp"
-#include "common/gl/osmesa_context.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/ksfo_runways.hpp"
 
@@ -130,8 +131,8 @@ NdInputs nd_inputs(const Approach& a) {
   return in;
 }
 
-HudInputs hud_inputs(const Approach& a) {
-  HudInputs in;
+fedsim::hud::HudInputs hud_inputs(const Approach& a) {
+  fedsim::hud::HudInputs in;
   in.pitch_rad = a.pitch_rad;
   in.roll_rad = a.roll_rad;
   in.heading_true_rad = a.heading_true_rad;
@@ -195,7 +196,7 @@ fedsim::visual::EyePose eye_on_approach(const fedsim::nav::RunwayEndRecord& end,
   return p;
 }
 
-void write_hud_over_ksfo(const fedsim::view::ChannelConfig& channel, DisplayRenderer& displays,
+void write_hud_over_ksfo(const fedsim::view::ChannelConfig& channel, fedsim::hud::HudRenderer& huds,
                          const std::string& path) {
   using namespace fedsim::visual;
   const auto ends = test::ksfo_runway_ends();
@@ -218,8 +219,8 @@ void write_hud_over_ksfo(const fedsim::view::ChannelConfig& channel, DisplayRend
   environment.sun_azimuth_rad = 200.0 * kDegToRad;
   fedsim::picture::Image scene, hud;
   visual.render(channel, eye_on_approach(end28r, a), environment, scene);
-  displays.render_hud(hud_inputs(a), channel, hud);
-  composite_over(scene, hud);
+  huds.render(hud_inputs(a), channel, hud);
+  fedsim::hud::composite_over(scene, hud);
   fedsim::picture::write_png(scene, path);
 }
 
@@ -256,13 +257,18 @@ int main(int argc, char** argv) {
                                     return e.runway == "28R";
                                   })->heading_true_rad;
     std::string fallback;
-    DisplayRenderer renderer(fedsim::gl::make_gl_context(*fedsim::gl::parse_gl_backend(gl), &fallback),
-                             default_font_paths(), samples);
+    const fedsim::gl::GlBackend backend = *fedsim::gl::parse_gl_backend(gl);
+    DisplayRenderer renderer(fedsim::gl::make_gl_context(backend, &fallback),
+                             fedsim::symbology::default_font_paths(), samples);
+    fedsim::hud::HudRenderer huds(fedsim::gl::make_gl_context(backend), fedsim::symbology::default_font_paths(),
+                                  samples);
     if (!fallback.empty()) std::printf("--gl auto: %s\n", fallback.c_str());
-    renderer.set_clock([] {
+    const auto steady_ns = [] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
           .count();
-    });
+    };
+    renderer.set_clock(steady_ns);
+    huds.set_clock(steady_ns);
     fedsim::view::ChannelConfig channel;
     channel.width_px = hw;
     channel.height_px = hh;
@@ -288,7 +294,7 @@ int main(int argc, char** argv) {
     const Measured mh = measure(
         warmup, frames,
         [&](int i, fedsim::picture::Image& image) {
-          return renderer.render_hud(hud_inputs(approach_at(i, runway_heading)), channel, image);
+          return huds.render(hud_inputs(approach_at(i, runway_heading)), channel, image);
         },
         hud);
 
@@ -317,7 +323,7 @@ int main(int argc, char** argv) {
       fedsim::picture::write_png(pfd, (dir / "pfd.png").string());
       fedsim::picture::write_png(nd, (dir / "nd.png").string());
       fedsim::picture::write_png(hud, (dir / "hud.png").string());
-      write_hud_over_ksfo(channel, renderer, (dir / "hud_over_ksfo.png").string());
+      write_hud_over_ksfo(channel, huds, (dir / "hud_over_ksfo.png").string());
       std::printf("wrote pfd.png, nd.png, hud.png, hud_over_ksfo.png in %s\n", png_dir.c_str());
     }
     const nlohmann::json figures = {{"bench", "displays"},

@@ -1,18 +1,19 @@
-// A 2-D drawing list: the displays are drawn into it as coloured and textured triangles (lines
-// become quads, circles polygons, text the atlas' glyph quads), which the renderer then draws in
-// one call, in order (painter's algorithm: later on top). Pure C++: it knows no OpenGL, so what
-// is drawn where can be tested without a context.
+// A 2-D drawing list: the displays and the HUD are drawn into it as coloured and textured
+// triangles (lines become quads, circles polygons, text the atlas' glyph quads), which the
+// renderer (canvas_renderer.hpp) then draws in one call, in order (painter's algorithm: later on
+// top). Pure C++: it knows no OpenGL, so what is drawn where can be tested without a context.
 //
 // Coordinates: pixels of the picture, x from the left edge, y from the top edge (as Image and
-// visual::ChannelCamera). Drawing goes through the current transform (a similarity: offset,
-// rotation, uniform scale; push()/pop() compose), so a display is written in its own design
-// units and an attitude sphere in its rotated frame; widths and text heights scale with it.
+// the image generator's channel camera). Drawing goes through the current transform (a
+// similarity: offset, rotation, uniform scale; push()/pop() compose), so a display is written in
+// its own design units and an attitude sphere in its rotated frame; widths and text heights
+// scale with it.
 // Compass angles (arc(), polar()) are clockwise from up, as a heading on a heading-up display.
 // Clipping: every vertex carries the screen rectangle it may colour (push_clip(); the fragment
 // shader discards outside it), so a tape's labels stop at the tape's edge.
 #pragma once
 
-#include "displays/model/font_atlas.hpp"
+#include "common/symbology/font_atlas.hpp"
 
 #include <Eigen/Core>
 
@@ -20,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 
 using Vec2 = Eigen::Vector2d;
 
@@ -112,4 +113,4 @@ class Canvas {
   std::vector<float> vertices_;
 };
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

@@ -1,6 +1,6 @@
 // The drawing list without OpenGL: screen conventions (y down, clockwise compass angles),
 // transforms composing, clip rectangles carried by every vertex, text laid out from the atlas.
-#include "displays/model/canvas.hpp"
+#include "common/symbology/canvas.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 namespace {
 
 constexpr double kQuarter = 0.5 * std::numbers::pi;
@@ -73,4 +73,4 @@ TEST(Canvas, TextFromTheAtlas) {
 }
 
 }  // namespace
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

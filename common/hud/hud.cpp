@@ -1,20 +1,27 @@
-#include "displays/model/hud.hpp"
+#include "common/hud/hud.hpp"
 
 #include "common/math/rotation.hpp"
+#include "common/symbology/palette.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace fedsim::displays {
+namespace fedsim::hud {
 
 namespace {
 
+using symbology::Align;
+using symbology::Canvas;
+using symbology::Colour;
+using symbology::Face;
+using symbology::FlightDirector;
+using symbology::Rect;
+using symbology::Vec2;
 using units::kDegToRad;
 using units::kRadToDeg;
-constexpr Colour kGreen = palette::kHudGreen;
+constexpr Colour kGreen = symbology::palette::kHudGreen;
 constexpr double kMinFpvSpeedMps = 2.0;
 
 // What every drawing function needs: the projection, the picture and its size unit (1 px in a
@@ -220,4 +227,4 @@ void draw_hud(Canvas& c, const HudInputs& in, const view::ChannelConfig& channel
   draw_heading_scale(c, f, in.heading_true_rad - in.magnetic_variation_rad);
 }
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::hud

@@ -1,11 +1,12 @@
-// The displays' glyphs: FreeType rasterises the printable ASCII characters of each font face
-// once, at start, into one coverage atlas (8 bits per texel, 0 = none, 255 = full), which the
-// renderer uploads as a texture and samples (trilinear, mipmapped) to draw text at any size.
+// The glyphs of the displays and the HUD: FreeType rasterises the printable ASCII characters of
+// each font face once, at start, into one coverage atlas (8 bits per texel, 0 = none, 255 =
+// full), which the renderer uploads as a texture and samples (trilinear, mipmapped) to draw text
+// at any size.
 //
 // Faces: kMono (DejaVu Sans Mono: every number, so digits keep their columns as they change) and
 // kSans (DejaVu Sans: labels and modes), from the Debian package fonts-dejavu-core; the paths are
-// found at configure time (federates/displays/CMakeLists.txt). Metrics are in atlas pixels at
-// the rasterised size (`pixel_size()`); a text drawn h pixels high scales them by h / that.
+// found at configure time (common/CMakeLists.txt). Metrics are in atlas pixels at the
+// rasterised size (`pixel_size()`); a text drawn h pixels high scales them by h / that.
 // Throws std::runtime_error naming the file when FreeType cannot load a face.
 #pragma once
 
@@ -15,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fedsim::displays {
+namespace fedsim::symbology {
 
 enum class Face { kMono = 0, kSans = 1 };
 
@@ -64,4 +65,4 @@ class FontAtlas {
   std::array<double, 2> cap_height_{};
 };
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::symbology

@@ -1,10 +1,10 @@
-#include "displays/model/composite.hpp"
+#include "common/hud/composite.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-namespace fedsim::displays {
+namespace fedsim::hud {
 
 void composite_over(picture::Image& channel, const picture::Image& hud) {
   if (channel.width_px != hud.width_px || channel.height_px != hud.height_px ||
@@ -23,4 +23,4 @@ void composite_over(picture::Image& channel, const picture::Image& hud) {
   }
 }
 
-}  // namespace fedsim::displays
+}  // namespace fedsim::hud
