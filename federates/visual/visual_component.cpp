@@ -1,15 +1,14 @@
 #include "visual/visual_component.hpp"
 #include "common/util/build_paths.hpp"
 
+#include "common/aircraft_pack/pack_facts.hpp"
+#include "common/aircraft_pack/pack_path.hpp"
 #include "common/frame_clock/rate_slot.hpp"
 #include "common/navdb/nav_database.hpp"
 #include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
-#include "flight/federate/start_options.hpp"
-#include "flight/model/aircraft/aircraft_model.hpp"
-#include "flight/model/aircraft/aircraft_pack.hpp"
 #include "common/hud/composite.hpp"
 #include "visual/model/channel_file.hpp"
 #include "common/gl/egl_context.hpp"
@@ -389,13 +388,6 @@ AirportSceneOptions scene_options(const nav::NavDatabase& db, const Options& o) 
   return options;
 }
 
-Eigen::Vector3d eye_from_cg(const std::string& aircraft) {
-  flight::AircraftPack pack = flight::load_aircraft_pack(flight::resolve_pack_path(aircraft));
-  const Eigen::Vector3d eye = pack.geometry.pilot_eye_point_m;
-  flight::AircraftModel model(std::move(pack), {});
-  return eye - model.outputs().cg_m;
-}
-
 }  // namespace
 
 runtime::FederateProgram program() {
@@ -448,7 +440,10 @@ runtime::FederateProgram program() {
     const std::size_t index = channel_index(channels, o->channel, o->channels);
     setup.channel = channels[index];
     setup.channel_id = static_cast<std::uint16_t>(o->channel_id >= 0 ? o->channel_id : static_cast<int>(index));
-    if (!o->aircraft.empty()) setup.channel.eye_offset_body_m += eye_from_cg(o->aircraft);
+    if (!o->aircraft.empty()) {
+      setup.channel.eye_offset_body_m +=
+          aircraft_pack::eye_from_cg_m(aircraft_pack::load_pack_facts(aircraft_pack::resolve_pack_path(o->aircraft)));
+    }
     const nav::NavDatabase db = nav::NavDatabase::open(o->navdb.empty() ? nav::default_database_path() : o->navdb);
     const std::vector<nav::RunwayEndRecord> ends = db.airport_runways(o->airport);
     if (ends.empty()) throw std::invalid_argument("--airport " + o->airport + ": no runways in " + db.path());
