@@ -12,9 +12,9 @@
 // 1 a failure while running or faults counted (the output folder is kept for inspection).
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
-#include "flight/fly/fly_options.hpp"
 #include "io/io_component.hpp"
 #include "io/model/input_profile.hpp"
+#include "tools/fly/fly_options.hpp"
 #include "tools/topic/in_process_recorder.hpp"
 
 #include <chrono>
@@ -25,6 +25,7 @@
 
 using namespace fedsim;
 using namespace fedsim::flight;
+using namespace fedsim::fly;
 
 namespace {
 constexpr int kRunFailed = 1;
@@ -58,7 +59,7 @@ void report_the_stall(const io::StallEntryPilot& pilot) {
   }
 }
 
-int fly(const FlyOptions& o, Prepared& p) {
+int fly_run(const FlyOptions& o, Prepared& p) {
   const auto frames = static_cast<std::uint64_t>(std::llround(o.duration_s * o.rate_hz));
   runtime::Composition composition({o.rate_hz, /*start_frozen=*/true});
   if (p.io) composition.add(*p.io);
@@ -145,7 +146,7 @@ int main(int argc, char** argv) {
     return e.exit_code();
   }
   try {
-    return fly(options, prepared);
+    return fly_run(options, prepared);
   } catch (const std::exception& e) {
     std::cerr << "fedsim-fly: " << e.what() << "\n";
     return kRunFailed;

@@ -18,7 +18,7 @@
 #include "common/util/child_process.hpp"
 #include "common/csv/csv_reader.hpp"
 
-namespace fedsim::flight {
+namespace fedsim::fly {
 namespace {
 
 namespace fs = std::filesystem;
@@ -466,4 +466,4 @@ TEST_F(FedsimFly, ThePilotRefusesRelativeControlsAndBadSettings) {
 }
 
 }  // namespace
-}  // namespace fedsim::flight
+}  // namespace fedsim::fly

@@ -1,11 +1,11 @@
-#include "flight/fly/fly_options.hpp"
+#include "tools/fly/fly_options.hpp"
 #include "common/util/cli_checks.hpp"
 #include "io/model/input_profile.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace fedsim::flight {
+namespace fedsim::fly {
 
 void add_fly_options(CLI::App& app, FlyOptions& o) {
   add_flight_options(app, o.flight);
@@ -55,7 +55,7 @@ void check_fly_options(FlyOptions& o) {
   }
 }
 
-io::ControlInputs cockpit_at_start(const AircraftControls& start, bool relative_controls) {
+io::ControlInputs cockpit_at_start(const flight::AircraftControls& start, bool relative_controls) {
   using io::Channel;
   io::ControlInputs c = io::default_controls();
   const double primaries = relative_controls ? 0.0 : 1.0;
@@ -94,4 +94,4 @@ std::unique_ptr<io::InputSource> make_fly_input_source(const FlyOptions& o, cons
   return std::make_unique<io::LayeredSource>(std::move(layers));
 }
 
-}  // namespace fedsim::flight
+}  // namespace fedsim::fly

@@ -1,5 +1,6 @@
 // Command-line options of fedsim-fly: the flight federate's own options (flight_program.hpp,
-// one set for both programs) plus the batch run's.
+// one set for both programs) plus the batch run's. A tool (tools/fly): it composes the flight
+// and I/O federates' components and the in-process recorder in one process.
 #pragma once
 
 #include "flight/federate/flight_program.hpp"
@@ -14,10 +15,10 @@
 
 #include <string>
 
-namespace fedsim::flight {
+namespace fedsim::fly {
 
 struct FlyOptions {
-  FlightOptions flight;          // --aircraft, start, model and weather options
+  flight::FlightOptions flight;  // --aircraft, start, model and weather options
   std::string inputs;            // --inputs profile.csv (flown by an I/O component)
   bool inputs_relative = false;  // --inputs-relative: --controls relative
   std::string pilot;             // --pilot stall-entry: a closed-loop test pilot
@@ -38,7 +39,7 @@ void check_fly_options(FlyOptions& options);
 /// channel: the start's configuration (flaps, gear lever, speedbrake, brakes, trims, mixture,
 /// propeller) and, with absolute controls, its primaries and throttles (relative: zero offsets).
 /// Without it an undriven channel would take fedsim-io's resting cockpit (gear DOWN).
-io::ControlInputs cockpit_at_start(const AircraftControls& start, bool relative_controls);
+io::ControlInputs cockpit_at_start(const flight::AircraftControls& start, bool relative_controls);
 
 /// The input source the options name (a profile, the pilot, or the pilot over a profile); null
 /// when neither is given; `pilot` is set to the pilot, if any (to report its stall). Throws for
@@ -46,4 +47,4 @@ io::ControlInputs cockpit_at_start(const AircraftControls& start, bool relative_
 std::unique_ptr<io::InputSource> make_fly_input_source(const FlyOptions& options,
                                                        const io::StallEntryPilot** pilot = nullptr);
 
-}  // namespace fedsim::flight
+}  // namespace fedsim::fly
