@@ -4,9 +4,7 @@
 
 namespace fedsim::aircraft_pack {
 
-namespace {
-
-PackFacts read_facts(const util::ConfigNode& root) {
+PackFacts read_pack_facts(const util::ConfigNode& root) {
   check_pack_root(root);
   PackFacts facts;
   facts.metadata = read_metadata(root.child("metadata"));
@@ -18,12 +16,10 @@ PackFacts read_facts(const util::ConfigNode& root) {
   return facts;
 }
 
-}  // namespace
-
-PackFacts load_pack_facts(const std::string& path) { return read_facts(util::ConfigNode::load_file(path)); }
+PackFacts load_pack_facts(const std::string& path) { return read_pack_facts(util::ConfigNode::load_file(path)); }
 
 PackFacts parse_pack_facts(const std::string& yaml_text, const std::string& origin) {
-  return read_facts(util::ConfigNode::parse(yaml_text, origin));
+  return read_pack_facts(util::ConfigNode::parse(yaml_text, origin));
 }
 
 // The sums in the mass balance's order (federates/flight/model/systems/mass_balance.cpp), so

@@ -29,6 +29,8 @@ struct PackFacts {
 PackFacts load_pack_facts(const std::string& path);
 /// As load_pack_facts, from YAML text; `origin` names the text in error messages.
 PackFacts parse_pack_facts(const std::string& yaml_text, const std::string& origin);
+/// The same from a pack's root node (the flight model's loader reads these sections with it).
+PackFacts read_pack_facts(const util::ConfigNode& root);
 
 /// The CG at the pack's loading [m, pack frame]: the empty aircraft, every point mass and every
 /// tank at its initial contents, as the flight model's mass balance starts.

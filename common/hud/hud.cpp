@@ -10,18 +10,13 @@
 
 namespace fedsim::hud {
 
+using namespace symbology;  // the drawing (canvas, glyphs, colours) the displays share
+
 namespace {
 
-using symbology::Align;
-using symbology::Canvas;
-using symbology::Colour;
-using symbology::Face;
-using symbology::FlightDirector;
-using symbology::Rect;
-using symbology::Vec2;
 using units::kDegToRad;
 using units::kRadToDeg;
-constexpr Colour kGreen = symbology::palette::kHudGreen;
+constexpr Colour kGreen = palette::kHudGreen;
 constexpr double kMinFpvSpeedMps = 2.0;
 
 // What every drawing function needs: the projection, the picture and its size unit (1 px in a

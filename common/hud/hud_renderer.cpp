@@ -1,6 +1,5 @@
 #include "common/hud/hud_renderer.hpp"
 
-#include "common/gl/osmesa_context.hpp"
 #include "common/hud/hud.hpp"
 
 namespace fedsim::hud {
@@ -8,13 +7,6 @@ namespace fedsim::hud {
 namespace {
 constexpr float kTransparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 }  // namespace
-
-HudRenderer::HudRenderer()
-    : HudRenderer(std::make_unique<gl::OsMesaContext>(), symbology::default_font_paths()) {}
-
-HudRenderer::HudRenderer(std::unique_ptr<gl::GlContext> context, const symbology::FontPaths& fonts,
-                         int samples)
-    : canvas_(std::move(context), fonts, samples) {}
 
 symbology::DrawStats HudRenderer::render(const HudInputs& in, const view::ChannelConfig& channel,
                                          picture::Image& image) {

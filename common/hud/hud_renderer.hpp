@@ -16,11 +16,11 @@ namespace fedsim::hud {
 
 class HudRenderer {
  public:
-  /// Renders with a new OSMesa context and the fonts the build found.
-  HudRenderer();
-  /// `samples`: multisampling 1, 2 or 4.
-  HudRenderer(std::unique_ptr<gl::GlContext> context, const symbology::FontPaths& fonts,
-              int samples = symbology::CanvasRenderer::kDefaultSamples);
+  /// A null context: a new OSMesa one; the fonts the build found; `samples`: 1, 2 or 4.
+  explicit HudRenderer(std::unique_ptr<gl::GlContext> context = nullptr,
+                       const symbology::FontPaths& fonts = symbology::default_font_paths(),
+                       int samples = symbology::CanvasRenderer::kDefaultSamples)
+      : canvas_(std::move(context), fonts, samples) {}
 
   /// The HUD for the visual channel `channel` (its size, field of view and offsets), so that
   /// its conformal symbols fall on what that channel's camera shows.

@@ -1,9 +1,9 @@
 #include "common/radio/approach_geometry.hpp"
 
 #include "common/geodesy/wgs84.hpp"
-#include "common/units/units.hpp"
 #include "common/radio/radio_geometry.hpp"
 #include "common/radio/station_checks.hpp"
+#include "common/units/units.hpp"
 
 #include <Eigen/Core>
 

@@ -1,9 +1,9 @@
 #include "common/radio/dme_receiver.hpp"
 
-#include "common/units/units.hpp"
 #include "common/radio/radio_geometry.hpp"
 #include "common/radio/receiver_link.hpp"
 #include "common/radio/station_checks.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <stdexcept>

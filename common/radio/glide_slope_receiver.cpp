@@ -1,9 +1,9 @@
 #include "common/radio/glide_slope_receiver.hpp"
 
-#include "common/units/units.hpp"
 #include "common/radio/approach_geometry.hpp"
 #include "common/radio/radio_geometry.hpp"
 #include "common/radio/receiver_link.hpp"
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>

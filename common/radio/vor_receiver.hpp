@@ -27,9 +27,9 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
-#include "common/units/units.hpp"
 #include "common/radio/aircraft_pose.hpp"
 #include "common/radio/signal_status.hpp"
+#include "common/units/units.hpp"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,7 @@
 #include "common/symbology/canvas_renderer.hpp"
 
 #include "common/gl/gl_program.hpp"
+#include "common/gl/osmesa_context.hpp"
 #include "common/gl/render_target.hpp"
 #include "common/util/input_checks.hpp"
 
@@ -162,7 +163,8 @@ struct CanvasRenderer::Impl {
 };
 
 CanvasRenderer::CanvasRenderer(std::unique_ptr<gl::GlContext> context, const FontPaths& fonts, int samples)
-    : impl_(std::make_unique<Impl>(std::move(context), fonts, samples)) {}
+    : impl_(std::make_unique<Impl>(context ? std::move(context) : std::make_unique<gl::OsMesaContext>(), fonts,
+                                   samples)) {}
 
 CanvasRenderer::~CanvasRenderer() = default;
 

@@ -41,9 +41,9 @@ class CanvasRenderer {
  public:
   static constexpr int kDefaultSamples = 4;
 
-  /// `samples`: multisampling 1, 2 or 4.
-  CanvasRenderer(std::unique_ptr<gl::GlContext> context, const FontPaths& fonts,
-                 int samples = kDefaultSamples);
+  /// A null context: a new OSMesa one (software, no GPU); `samples`: multisampling 1, 2 or 4.
+  explicit CanvasRenderer(std::unique_ptr<gl::GlContext> context = nullptr,
+                          const FontPaths& fonts = default_font_paths(), int samples = kDefaultSamples);
   ~CanvasRenderer();
   CanvasRenderer(const CanvasRenderer&) = delete;
   CanvasRenderer& operator=(const CanvasRenderer&) = delete;

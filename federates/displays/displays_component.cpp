@@ -1,11 +1,11 @@
 #include "displays/displays_component.hpp"
 
 #include "common/frame_clock/rate_slot.hpp"
+#include "common/gl/egl_context.hpp"
+#include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
-#include "common/gl/egl_context.hpp"
-#include "common/picture/snapshot_tag.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -27,12 +27,12 @@
 #pragma once
 
 #include "common/navdb/nav_database.hpp"
+#include "common/picture/image.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
 #include "displays/display_mapping.hpp"
 #include "displays/model/display_renderer.hpp"
-#include "common/picture/image.hpp"
-#include "common/picture/jpeg_encoder.hpp"
 
 #include <cstdint>
 #include <memory>

@@ -1,8 +1,8 @@
 #include "nav/nav_component.hpp"
 #include "common/util/cli_checks.hpp"
 
-#include "common/units/units.hpp"
 #include "common/radio/approach_geometry.hpp"
+#include "common/units/units.hpp"
 
 #include <cmath>
 #include <limits>

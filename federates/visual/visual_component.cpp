@@ -4,14 +4,14 @@
 #include "common/aircraft_pack/pack_facts.hpp"
 #include "common/aircraft_pack/pack_path.hpp"
 #include "common/frame_clock/rate_slot.hpp"
+#include "common/gl/egl_context.hpp"
+#include "common/hud/composite.hpp"
 #include "common/navdb/nav_database.hpp"
 #include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
-#include "common/hud/composite.hpp"
 #include "visual/model/channel_file.hpp"
-#include "common/gl/egl_context.hpp"
 #include "visual/model/eye_extrapolation.hpp"
 
 #include <algorithm>

@@ -28,14 +28,14 @@
 // picture stays), "command_rejected" (a weather, time-of-day or snapshot command out of range).
 #pragma once
 
+#include "common/hud/hud_renderer.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
-#include "common/hud/hud_renderer.hpp"
 #include "common/symbology_mapping/symbology_mapping.hpp"
-#include "visual/model/airport_scene.hpp"
 #include "common/view/channel_config.hpp"
+#include "visual/model/airport_scene.hpp"
 #include "visual/model/environment.hpp"
-#include "common/picture/jpeg_encoder.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/sun_position.hpp"
 

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
-#include "common/units/units.hpp"
 #include "common/radio/aircraft_pose.hpp"
+#include "common/units/units.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/LocalCartesian.hpp>

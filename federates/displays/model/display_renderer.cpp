@@ -1,6 +1,5 @@
 #include "displays/model/display_renderer.hpp"
 
-#include "common/gl/osmesa_context.hpp"
 #include "displays/model/nd.hpp"
 #include "displays/model/pfd.hpp"
 
@@ -9,13 +8,6 @@ namespace fedsim::displays {
 namespace {
 constexpr float kOpaqueBlack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 }  // namespace
-
-DisplayRenderer::DisplayRenderer()
-    : DisplayRenderer(std::make_unique<gl::OsMesaContext>(), symbology::default_font_paths()) {}
-
-DisplayRenderer::DisplayRenderer(std::unique_ptr<gl::GlContext> context, const symbology::FontPaths& fonts,
-                                 int samples)
-    : canvas_(std::move(context), fonts, samples) {}
 
 DisplayStats DisplayRenderer::render_pfd(const PfdInputs& in, int width_px, int height_px,
                                          picture::Image& image) {

@@ -28,11 +28,11 @@ class DisplayRenderer {
  public:
   static constexpr int kDefaultSamples = symbology::CanvasRenderer::kDefaultSamples;
 
-  /// Renders with a new OSMesa context and the fonts the build found.
-  DisplayRenderer();
-  /// `samples`: multisampling 1, 2 or 4.
-  DisplayRenderer(std::unique_ptr<gl::GlContext> context, const symbology::FontPaths& fonts,
-                  int samples = kDefaultSamples);
+  /// A null context: a new OSMesa one; the fonts the build found; `samples`: 1, 2 or 4.
+  explicit DisplayRenderer(std::unique_ptr<gl::GlContext> context = nullptr,
+                           const symbology::FontPaths& fonts = symbology::default_font_paths(),
+                           int samples = kDefaultSamples)
+      : canvas_(std::move(context), fonts, samples) {}
 
   /// Pictures of width x height pixels (16..4096) into `image`, its storage reused.
   DisplayStats render_pfd(const PfdInputs& in, int width_px, int height_px, picture::Image& image);

@@ -9,14 +9,7 @@
 
 namespace fedsim::displays {
 
-using symbology::Align;
-using symbology::Canvas;
-using symbology::Colour;
-using symbology::Face;
-using symbology::Rect;
-using symbology::Transform;
-using symbology::Vec2;
-using symbology::polar;
+using namespace symbology;  // the drawing (canvas, glyphs, colours) the displays share
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include "displays/displays_component.hpp"
 #include "displays/model/pfd.hpp"
 
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
-#include "common/picture/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 

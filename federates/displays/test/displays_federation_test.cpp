@@ -3,13 +3,13 @@
 // fedsim/visual_picture decode as JPEGs of the displays' size, their status reports the frames
 // drawn, and the last pictures are written as PNGs on stop. The control: a picture of another
 // channel id than the two displays' never arrives (only displays are in this federation).
-#include "common/runtime/federate_options.hpp"
-#include "common/util/build_paths.hpp"
-#include "common/runtime/subscription.hpp"
-#include "common/runtime/topic_catalogue.hpp"
-#include "common/util/child_process.hpp"
 #include "common/picture/image.hpp"
 #include "common/picture/jpeg_encoder.hpp"
+#include "common/runtime/federate_options.hpp"
+#include "common/runtime/subscription.hpp"
+#include "common/runtime/topic_catalogue.hpp"
+#include "common/util/build_paths.hpp"
+#include "common/util/child_process.hpp"
 
 #include <gtest/gtest.h>
 

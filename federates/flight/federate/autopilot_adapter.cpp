@@ -1,7 +1,7 @@
 #include "flight/federate/autopilot_adapter.hpp"
 
-#include "common/units/units.hpp"
 #include "common/radio/vor_receiver.hpp"
+#include "common/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>

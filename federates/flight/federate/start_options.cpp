@@ -1,6 +1,6 @@
 #include "flight/federate/start_options.hpp"
-#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "common/airports/runway_table.hpp"
 

@@ -11,8 +11,8 @@
 // one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU): LP_NUM_THREADS sets its
 // rasteriser threads (default: the cores).
 #include "common/gl/egl_context.hpp"
-#include "common/util/timing_summary.hpp"
 #include "common/units/units.hpp"
+#include "common/util/timing_summary.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/ksfo_runways.hpp"

@@ -2,8 +2,8 @@
 
 #include "common/gl/gl_program.hpp"
 #include "common/gl/osmesa_context.hpp"
-#include "visual/model/procedural_texture.hpp"
 #include "common/gl/render_target.hpp"
+#include "visual/model/procedural_texture.hpp"
 #include "visual/model/shaders.hpp"
 #include "visual/model/sky_model.hpp"
 

@@ -21,13 +21,13 @@
 // GL failures throw std::runtime_error.
 #pragma once
 
-#include "visual/model/channel_camera.hpp"
-#include "common/view/channel_config.hpp"
-#include "visual/model/environment.hpp"
-#include "visual/model/eye_pose.hpp"
 #include "common/gl/gl_context.hpp"
 #include "common/gl/render_clock.hpp"
 #include "common/picture/image.hpp"
+#include "common/view/channel_config.hpp"
+#include "visual/model/channel_camera.hpp"
+#include "visual/model/environment.hpp"
+#include "visual/model/eye_pose.hpp"
 #include "visual/model/scene.hpp"
 
 #include <cstdint>

@@ -5,10 +5,10 @@
 // time of day, and refuses a NaN state, a bad tag and a bad weather value by name.
 #include "visual/visual_component.hpp"
 
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
 #include "visual/model/airport_scene.hpp"
-#include "common/picture/jpeg_encoder.hpp"
 #include "visual/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -6,9 +6,9 @@
 // controls: a pitch 1 deg higher (1.8 % differ here), and 150 instead of 140 kt (0.51 %: the
 // speed tape and readout), each fail it.
 // FEDSIM_UPDATE_GOLDEN=1 rewrites the stored picture (review it before committing).
-#include "displays/model/test/test_support.hpp"
-#include "common/util/build_paths.hpp"
 #include "common/picture/image_compare.hpp"
+#include "common/util/build_paths.hpp"
+#include "displays/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 // Also: VOR/LOC on SFO VOR (NAV1 on 115.80 MHz, OBS 240) captures the radial from the
 // navigation federate's VOR readings; the instructor's autopilot failure disengages it with an
 // alert; a bad MCP panel is rejected and counted.
-#include "flight/federate/flight_program.hpp"
 #include "common/util/build_paths.hpp"
+#include "flight/federate/flight_program.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/landing_figures.hpp"
 #include "io/io_component.hpp"

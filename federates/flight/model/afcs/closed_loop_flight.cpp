@@ -3,10 +3,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "flight/model/afcs/lateral_guidance.hpp"
-#include "flight/model/scenario/reposition.hpp"
 #include "common/radio/glide_slope_receiver.hpp"
 #include "common/radio/localizer_receiver.hpp"
+#include "flight/model/afcs/lateral_guidance.hpp"
+#include "flight/model/scenario/reposition.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 

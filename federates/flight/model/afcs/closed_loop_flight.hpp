@@ -8,12 +8,12 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
+#include "common/radio/approach_geometry.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "flight/model/afcs/afcs.hpp"
 #include "flight/model/afcs/model_coupling.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/scenario/trim.hpp"
-#include "common/radio/approach_geometry.hpp"
-#include "common/radio/nav_radio.hpp"
 
 #include <deque>
 #include <memory>

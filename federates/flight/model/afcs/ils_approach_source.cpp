@@ -3,8 +3,8 @@
 
 #include "common/csv/csv_reader.hpp"
 #include "common/navdb/ils_row.hpp"
-#include "common/units/units.hpp"
 #include "common/radio/approach_geometry.hpp"
+#include "common/units/units.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 

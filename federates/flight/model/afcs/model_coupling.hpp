@@ -12,16 +12,16 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
-#include "flight/model/afcs/afcs_inputs.hpp"
-#include "flight/model/afcs/afcs_outputs.hpp"
-#include "flight/model/aircraft/aircraft_controls.hpp"
-#include "flight/model/aircraft/aircraft_outputs.hpp"
-#include "flight/model/aircraft/aircraft_pack.hpp"
 #include "common/radio/aircraft_pose.hpp"
 #include "common/radio/approach_geometry.hpp"
 #include "common/radio/glide_slope_receiver.hpp"
 #include "common/radio/localizer_receiver.hpp"
 #include "common/radio/nav_radio.hpp"
+#include "flight/model/afcs/afcs_inputs.hpp"
+#include "flight/model/afcs/afcs_outputs.hpp"
+#include "flight/model/aircraft/aircraft_controls.hpp"
+#include "flight/model/aircraft/aircraft_outputs.hpp"
+#include "flight/model/aircraft/aircraft_pack.hpp"
 
 #include <vector>
 

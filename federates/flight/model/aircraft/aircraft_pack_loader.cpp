@@ -1,7 +1,8 @@
-// Aircraft-pack loader (data/aircraft/README.md): the top level, metadata, geometry, mass,
-// limits and the stall-warning schedule through common/aircraft_pack, the flight model's own
-// sections here; then the systems models' and the lift's checks.
-#include "common/aircraft_pack/pack_sections.hpp"
+// Aircraft-pack loader (data/aircraft/README.md): the top level and the sections every user of
+// a pack reads (metadata, geometry, mass, limits, the stall-warning schedule) through
+// common/aircraft_pack, the flight model's own sections here; then the systems models' and the
+// lift's checks.
+#include "common/aircraft_pack/pack_facts.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
 #include "flight/model/aircraft/pack_reading.hpp"
 #include "flight/model/aircraft/pack_to_systems.hpp"
@@ -16,11 +17,6 @@ namespace fedsim::flight {
 namespace {
 
 using namespace pack_detail;
-using aircraft_pack::read_geometry;
-using aircraft_pack::read_limits;
-using aircraft_pack::read_mass;
-using aircraft_pack::read_metadata;
-using aircraft_pack::read_stall_warning;
 
 // The systems models validate their own Params; a pack they reject is refused at load time,
 // pointing at the section that fills them.
@@ -89,18 +85,17 @@ void check_stall_warning(const AircraftPack& pack, const ConfigNode& root) {
 }
 
 AircraftPack read_pack(const ConfigNode& root) {
-  aircraft_pack::check_pack_root(root);
+  aircraft_pack::PackFacts common = aircraft_pack::read_pack_facts(root);  // the top level too
   AircraftPack pack;
-  pack.metadata = read_metadata(root.child("metadata"));
-  pack.metadata.file = root.file();
-  pack.geometry = read_geometry(root.child("geometry"));
-  pack.mass = read_mass(root.child("mass"));
+  pack.metadata = std::move(common.metadata);
+  pack.geometry = common.geometry;
+  pack.mass = std::move(common.mass);
+  pack.limits = common.limits;
+  pack.stall_warning = std::move(common.stall_warning);
   pack.flight_controls = read_flight_controls(root.child("flight_controls"));
   pack.aerodynamics = read_aerodynamics(root.child("aerodynamics"), pack.flight_controls);
   pack.engines = read_propulsion(root.child("propulsion"), pack.mass);
   pack.landing_gear = read_landing_gear(root.child("landing_gear"));
-  pack.limits = read_limits(root.child("limits"));
-  pack.stall_warning = read_stall_warning(root);
   check_against_systems_models(pack, root);
   check_stall_warning(pack, root);
   return pack;

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "flight/model/aircraft/aircraft_model.hpp"
 #include "common/atmosphere/airspeed.hpp"
+#include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/weather/wind_profile.hpp"
 
 namespace fedsim::flight {

@@ -23,12 +23,12 @@
 #pragma once
 
 #include "common/math/rotation.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "nav/model/gps/gps_receiver.hpp"
 #include "nav/model/ins/inertial_navigation_system.hpp"
 #include "nav/model/radio/adf_radio.hpp"
 #include "nav/model/radio/flight_director.hpp"
 #include "nav/model/radio/marker_receiver.hpp"
-#include "common/radio/nav_radio.hpp"
 
 #include <Eigen/Geometry>
 

@@ -9,10 +9,10 @@
 // also tunes; FAA AIM 1-1-3) gives kNotTuned, a bad pose kInvalidInput. A bad record throws.
 #pragma once
 
-#include "nav/model/radio/adf_receiver.hpp"
 #include "common/radio/aircraft_pose.hpp"
 #include "common/radio/station_outages.hpp"
 #include "common/radio/station_source.hpp"
+#include "nav/model/radio/adf_receiver.hpp"
 
 #include <cstdint>
 

@@ -39,8 +39,8 @@
 // Below 1 m/s (on the ground) the flight path is taken as level and the bank command is 0.
 #pragma once
 
-#include "common/units/units.hpp"
 #include "common/radio/aircraft_pose.hpp"
+#include "common/units/units.hpp"
 
 #include <cstdint>
 #include <optional>

@@ -1,7 +1,7 @@
 // Channel files: the shipped ones load (centre; left/centre/right meeting edge to edge), angles
 // in degrees become radians, and malformed files are refused naming the file, line and field.
-#include "visual/model/channel_file.hpp"
 #include "common/util/build_paths.hpp"
+#include "visual/model/channel_file.hpp"
 
 #include "common/units/units.hpp"
 

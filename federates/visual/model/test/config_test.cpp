@@ -1,9 +1,9 @@
 // Malformed channel configurations, eye poses and environments give clear errors naming the
 // field; PNG files round-trip and bad ones are reported with their path.
+#include "common/picture/image.hpp"
 #include "common/view/channel_config.hpp"
 #include "visual/model/environment.hpp"
 #include "visual/model/eye_pose.hpp"
-#include "common/picture/image.hpp"
 #include "visual/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>

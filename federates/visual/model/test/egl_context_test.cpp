@@ -3,8 +3,8 @@
 // tolerance (the same rasteriser: identical here); --gl names parse; auto takes a hardware EGL
 // device where there is one and otherwise falls back to OSMesa, saying why.
 #include "common/gl/egl_context.hpp"
-#include "common/picture/image_compare.hpp"
 #include "common/gl/osmesa_context.hpp"
+#include "common/picture/image_compare.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/test_support.hpp"
 

@@ -3,10 +3,10 @@
 // statistics, and where test pictures go.
 #pragma once
 
+#include "common/picture/image.hpp"
 #include "common/units/units.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/eye_pose.hpp"
-#include "common/picture/image.hpp"
 #include "visual/model/test/ksfo_runways.hpp"
 
 #include <GeographicLib/Geodesic.hpp>

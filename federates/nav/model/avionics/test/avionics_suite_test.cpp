@@ -1,9 +1,9 @@
 // The navigation executive: radios, markers, GPS, INS and flight director stepped together on a
 // true flight, the failures shown as invalid readings, the database-backed station source.
-#include "nav/model/avionics/avionics_suite.hpp"
-#include "nav/model/avionics/database_station_source.hpp"
 #include "common/radio/in_memory_station_source.hpp"
 #include "common/radio/test/station_fixtures.hpp"
+#include "nav/model/avionics/avionics_suite.hpp"
+#include "nav/model/avionics/database_station_source.hpp"
 
 #include "common/units/units.hpp"
 

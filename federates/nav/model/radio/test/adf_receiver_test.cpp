@@ -1,9 +1,9 @@
 // The ADF: relative bearing and NDB range (the receiver), and the tuner over an in-memory station
 // source (which beacon is received on a frequency, outages, receiver failures).
-#include "nav/model/radio/adf_radio.hpp"
-#include "nav/model/radio/adf_receiver.hpp"
 #include "common/radio/in_memory_station_source.hpp"
 #include "common/radio/radio_geometry.hpp"
+#include "nav/model/radio/adf_radio.hpp"
+#include "nav/model/radio/adf_receiver.hpp"
 
 #include "common/radio/test/station_fixtures.hpp"
 

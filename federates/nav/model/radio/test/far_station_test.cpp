@@ -1,11 +1,11 @@
 // Stations beyond any reception are culled by a cheap distance bound (radio_geometry.hpp) and
 // reported out of their service volume; the bound never exceeds the geodesic distance, so no
 // station that could be heard is culled.
-#include "common/radio/nav_radio.hpp"
-#include "nav/model/radio/adf_radio.hpp"
 #include "common/radio/in_memory_station_source.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "common/radio/radio_geometry.hpp"
 #include "common/radio/test/station_fixtures.hpp"
+#include "nav/model/radio/adf_radio.hpp"
 
 #include <gtest/gtest.h>
 

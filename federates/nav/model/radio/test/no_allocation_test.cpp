@@ -1,11 +1,11 @@
 // The per-frame calls allocate nothing once the stations are loaded (the counting operator new
 // of fedsim_allocation_counter): a NAV, ADF and marker receive and a flight-director command.
+#include "common/radio/in_memory_station_source.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "common/util/allocation_counter.hpp"
 #include "nav/model/radio/adf_radio.hpp"
 #include "nav/model/radio/flight_director.hpp"
-#include "common/radio/in_memory_station_source.hpp"
 #include "nav/model/radio/marker_receiver.hpp"
-#include "common/radio/nav_radio.hpp"
 
 #include "common/radio/test/station_fixtures.hpp"
 
