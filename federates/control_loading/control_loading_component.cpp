@@ -1,6 +1,6 @@
 #include "control_loading/control_loading_component.hpp"
-#include "flight/federate/start_options.hpp"
-#include "flight/model/aircraft/stall_warning.hpp"
+#include "common/aircraft_pack/pack_facts.hpp"
+#include "common/aircraft_pack/pack_path.hpp"
 
 #include <cstdio>
 
@@ -43,13 +43,10 @@ double scheduled_shaker_alpha_rad(const ControlLoadingSetup& setup, double flap_
 }
 
 void schedule_shaker_from_pack(const std::string& pack_path, ControlLoadingSetup& setup) {
-  const flight::AircraftPack pack = flight::load_aircraft_pack(pack_path);
-  setup.shaker_flap_norm.clear();
-  setup.shaker_alpha_rad.clear();
-  for (double flaps : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-    setup.shaker_flap_norm.push_back(flaps);
-    setup.shaker_alpha_rad.push_back(flight::stall_angles(pack, flaps).alpha_warning_rad);
-  }
+  const aircraft_pack::PackFacts facts = aircraft_pack::load_pack_facts(pack_path);
+  const aircraft_pack::StallWarningSpec& schedule = aircraft_pack::stall_warning_of(facts);
+  setup.shaker_flap_norm = schedule.flap_norm;
+  setup.shaker_alpha_rad = schedule.alpha_rad;
 }
 
 std::optional<std::string> inputs_from_messages(const msg::AircraftState& aircraft, double now_s,
@@ -261,7 +258,7 @@ runtime::FederateProgram program() {
     ControlLoadingSetup setup;
     setup.engage_on_start = o->engage == "on";
     setup.state_qos = o->state_qos;
-    if (!o->aircraft.empty()) schedule_shaker_from_pack(flight::resolve_pack_path(o->aircraft), setup);
+    if (!o->aircraft.empty()) schedule_shaker_from_pack(aircraft_pack::resolve_pack_path(o->aircraft), setup);
     return std::unique_ptr<runtime::Component>(
         std::make_unique<ControlLoadingComponent>(common.name, std::move(setup)));
   };

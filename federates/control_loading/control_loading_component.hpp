@@ -40,8 +40,8 @@ namespace fedsim::control_loading {
 struct ControlLoadingSetup {
   ControlLoadingParameters parameters;
   // The stick shaker's angle against the flap position (--aircraft: the pack's stall-warning
-  // angles, flight/model/aircraft/stall_warning.hpp), interpolated linearly; empty: the
-  // parameters' fixed shaker_alpha_rad.
+  // schedule, common/aircraft_pack), interpolated linearly; empty: the parameters' fixed
+  // shaker_alpha_rad.
   std::vector<double> shaker_flap_norm;
   std::vector<double> shaker_alpha_rad;
   bool engage_on_start = true;
@@ -51,7 +51,9 @@ struct ControlLoadingSetup {
 /// The shaker angle of the schedule at flap position `flap_norm` (clamped to its ends); NaN for
 /// an empty schedule.
 double scheduled_shaker_alpha_rad(const ControlLoadingSetup& setup, double flap_norm);
-/// The schedule of a pack (--aircraft): its stall-warning angle (1.05 V_s) at flaps 0, 0.25 ... 1.
+/// The schedule of a pack (--aircraft): its stated stall-warning angles (1.05 V_s: the flight
+/// model checks them against the pack's lift) at its flap settings. Throws
+/// std::invalid_argument naming the pack when it states none.
 void schedule_shaker_from_pack(const std::string& pack_path, ControlLoadingSetup& setup);
 
 /// The loader's inputs from the latest samples; the reason one cannot be used, or nullopt.

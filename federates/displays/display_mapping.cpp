@@ -8,7 +8,9 @@
 namespace fedsim::displays {
 namespace {
 
-using units::kTwoPi;
+using symbology_mapping::DisplayContext;
+using symbology_mapping::flight_director;
+using symbology_mapping::wrap_2pi;
 
 constexpr double kScaleDots = 2.0;      // full-scale deflection, dots each side
 constexpr double kPegDots = 2.5;        // the pointer stops at the scale's end
@@ -18,11 +20,6 @@ constexpr double kStandardPressurePa = 101325.0;
 // The model's own limits (model/display_inputs.cpp): a trend beyond them is drawn at the limit.
 constexpr double kMaxTrendMps = 100.0;
 constexpr double kMaxHeightChangeM = 2000.0;
-
-double wrap_2pi(double a) {
-  a = std::fmod(a, kTwoPi);
-  return a < 0.0 ? a + kTwoPi : a;
-}
 
 bool tuned(const msg::NavReceiver& nav) {
   return nav.status() != msg::SIGNAL_NOT_TUNED && nav.status() != msg::SIGNAL_NO_STATION;
@@ -65,7 +62,7 @@ NearbyNavaids nearby_navaids(const nav::NavDatabase& db, double lat_rad, double 
   NearbyNavaids out;
   const std::vector<nav::NavaidHit> hits = db.within(lat_rad, lon_rad, range_nm * units::kNmToM);
   if (hits.empty()) return out;
-  out.magnetic_variation_rad = hits.front().navaid.magnetic_variation_rad;  // nearest first
+  out.magnetic_variation_rad = symbology_mapping::magnetic_variation_of_nearest(hits);
   for (const nav::NavaidHit& hit : hits) {
     if (out.navaids.size() >= limit) break;
     Navaid n;
@@ -169,30 +166,6 @@ FlightModes flight_modes(const msg::FlightModeAnnunciator& fma) {
   return m;
 }
 
-FlightDirector flight_director(const msg::NavigationState* nav, const msg::AutopilotState* autopilot) {
-  FlightDirector fd;
-  auto finite_or_zero = [](double v) { return std::isfinite(v) ? v : 0.0; };
-  if (autopilot != nullptr) {
-    fd.on = autopilot->fma().flight_director_on() || autopilot->fma().autopilot_engaged();
-    fd.pitch_valid = autopilot->fd_pitch_valid() && std::isfinite(autopilot->fd_pitch_rad());
-    fd.roll_valid = autopilot->fd_roll_valid() && std::isfinite(autopilot->fd_roll_rad());
-    fd.pitch_command_rad = fd.pitch_valid ? autopilot->fd_pitch_rad() : 0.0;
-    fd.roll_command_rad = fd.roll_valid ? autopilot->fd_roll_rad() : 0.0;
-    if (fd.on) return fd;
-  }
-  if (nav != nullptr) {
-    const msg::FlightDirectorState& n = nav->fd();
-    if (n.lateral_mode() != msg::FD_LATERAL_OFF || n.vertical_mode() != msg::FD_VERTICAL_OFF) {
-      fd.on = true;
-      fd.pitch_valid = n.pitch_valid() && std::isfinite(n.pitch_command_rad());
-      fd.roll_valid = n.roll_valid() && std::isfinite(n.roll_command_rad());
-      fd.pitch_command_rad = fd.pitch_valid ? finite_or_zero(n.pitch_command_rad()) : 0.0;
-      fd.roll_command_rad = fd.roll_valid ? finite_or_zero(n.roll_command_rad()) : 0.0;
-    }
-  }
-  return fd;
-}
-
 PfdInputs pfd_inputs(const msg::AircraftState& s, const msg::NavigationState* nav,
                      const msg::AutopilotState* autopilot, const DisplayContext& context) {
   PfdInputs in;
@@ -261,21 +234,6 @@ NdInputs nd_inputs(const msg::AircraftState& s, const msg::NavigationState* nav,
     in.bearing2.ident = adf.ident().to_string().substr(0, 5);
     if (in.bearing2.valid) in.bearing2.relative_bearing_rad = wrap_2pi(adf.relative_bearing_rad());
   }
-  return in;
-}
-
-HudInputs hud_inputs(const msg::AircraftState& s, const msg::NavigationState* nav,
-                     const msg::AutopilotState* autopilot, const DisplayContext& context) {
-  HudInputs in;
-  in.pitch_rad = s.theta_rad();
-  in.roll_rad = s.phi_rad();
-  in.heading_true_rad = wrap_2pi(s.psi_rad());
-  in.magnetic_variation_rad = context.magnetic_variation_rad;
-  in.velocity_ned_mps = {s.velocity_ned_mps()[0], s.velocity_ned_mps()[1], s.velocity_ned_mps()[2]};
-  in.ias_mps = std::max(0.0, s.air().cas_mps());
-  in.altitude_m = s.altitude_msl_m();
-  in.vertical_speed_mps = s.climb_rate_mps();
-  in.flight_director = flight_director(nav, autopilot);
   return in;
 }
 

@@ -1,8 +1,8 @@
 // What the cockpit displays are given, from the federation's state topics: pure functions from
 // the IDL samples (fedsim/aircraft_state, fedsim/navigation_state, fedsim/autopilot_state) to
-// the displays model's inputs (model/display_inputs.hpp). No DDS entity, no clock: tested
-// directly (test/display_mapping_test.cpp). Shared by fedsim-displays (PFD, ND) and
-// fedsim-visual --hud (the HUD over the centre channel).
+// the displays model's inputs (model/display_inputs.hpp), on top of what fedsim-visual's HUD
+// shares (common/symbology_mapping: the flight director, the magnetic variation). No DDS entity,
+// no clock: tested directly (test/display_mapping_test.cpp).
 //
 // Conventions (the IDL's and the model's, both SI): a NAV receiver's deviations are -1..1 of full
 // scale, + fly right / fly up; the displays' scales are 2 dots each side, so dots = 2 x deviation.
@@ -10,10 +10,11 @@
 // is not usable shows the flag (NavSignal::kFailed); one with nothing of that kind tuned, none.
 #pragma once
 
+#include "common/navdb/nav_database.hpp"
+#include "common/symbology_mapping/symbology_mapping.hpp"
+#include "displays/model/display_inputs.hpp"
 #include "fedsim/msg/aircraft_state.h"
 #include "fedsim/msg/autopilot.h"
-#include "common/navdb/nav_database.hpp"
-#include "displays/model/display_inputs.hpp"
 #include "fedsim/msg/navigation.h"
 
 #include <string>
@@ -44,35 +45,19 @@ ToFrom to_from_of(msg::ToFromFlag flag);
 
 /// The FMA's text (Boeing abbreviations, idl/autopilot.idl), "" for none.
 FlightModes flight_modes(const msg::FlightModeAnnunciator& fma);
-/// Flight director bars: the autopilot's when it has one (its FD switch, or CMD), else the
-/// navigation federate's own FD computer (idl/navigation.idl FlightDirectorState) when a mode is
-/// active; off when neither.
-FlightDirector flight_director(const msg::NavigationState* nav, const msg::AutopilotState* autopilot);
-
-/// The local magnetic variation [rad] (east +) the headings are shown with; the adapters take it
-/// from the nearest navaid in the navigation database.
-struct DisplayContext {
-  double magnetic_variation_rad = 0.0;
-};
-
 /// PFD inputs: attitude, speeds, altitude (MSL, altimeter set to the standard 1013.25 hPa, as
 /// the standard atmosphere of the flight model makes MSL and indicated altitude one), trends
 /// (IAS in 10 s from the along-body acceleration, altitude in 6 s from the climb rate), radio
 /// altitude (height of the CG above the terrain), NAV1 localizer and glide slope, marker, FD
 /// and the FMA. `nav`, `autopilot` may be null (not yet received: nothing tuned, no FD).
 PfdInputs pfd_inputs(const msg::AircraftState& state, const msg::NavigationState* nav,
-                     const msg::AutopilotState* autopilot, const DisplayContext& context);
+                     const msg::AutopilotState* autopilot, const symbology_mapping::DisplayContext& context);
 
 /// ND inputs: heading and track up (magnetic), NAV1's course, deviation, TO/FROM and DME,
 /// bearing pointer 1 to the VOR on NAV2 (the VOR on NAV1 when NAV2 has none), bearing pointer 2
 /// to the ADF's NDB, the navaids given, GS and TAS.
 NdInputs nd_inputs(const msg::AircraftState& state, const msg::NavigationState* nav,
-                   const DisplayContext& context, std::vector<Navaid> navaids, double range_nm);
-
-/// HUD inputs: attitude, true heading, velocity over the ground (the FPV), speed, altitude,
-/// vertical speed, the FD cue.
-HudInputs hud_inputs(const msg::AircraftState& state, const msg::NavigationState* nav,
-                     const msg::AutopilotState* autopilot, const DisplayContext& context);
+                   const symbology_mapping::DisplayContext& context, std::vector<Navaid> navaids, double range_nm);
 
 /// The ND's navaids from the database: those within range_nm of the position, at their
 /// magnetic bearing (true bearing - variation) and distance, nearest first, at most `limit`;

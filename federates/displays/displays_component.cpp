@@ -1,11 +1,11 @@
 #include "displays/displays_component.hpp"
 
 #include "common/frame_clock/rate_slot.hpp"
+#include "common/gl/egl_context.hpp"
+#include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
-#include "visual/model/egl_context.hpp"
-#include "visual/visual_component.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -35,7 +35,7 @@ DisplaysComponent::DisplaysComponent(std::string name, DisplaysSetup setup)
   if (!(setup_.render_hz > 0.0 && setup_.render_hz <= 1000.0)) throw std::invalid_argument("render_hz: (0, 1000]");
   if (!(setup_.stream_hz >= 0.0 && setup_.stream_hz <= 60.0)) throw std::invalid_argument("stream_hz: [0, 60]");
   if (!(setup_.nd_range_nm >= 5.0 && setup_.nd_range_nm <= 640.0)) throw std::invalid_argument("nd_range_nm: [5, 640]");
-  visual::validate(setup_.jpeg);
+  picture::validate(setup_.jpeg);
   setup_.renderer->set_clock(monotonic_ns);
   const std::string renderer = setup_.renderer->description().substr(0, 95);
   drawn_.resize(setup_.displays.size());
@@ -70,7 +70,7 @@ void DisplaysComponent::on_command(const msg::SimCommand& command) {
   for (std::size_t i = 0; i < drawn_.size(); ++i) {
     if (!target.empty() && target != setup_.displays[i].name) continue;
     mine = true;
-    if (const auto problem = visual::snapshot_tag_problem(tag)) {
+    if (const auto problem = picture::snapshot_tag_problem(tag)) {
       report_fault("command_rejected", "command seq=" + std::to_string(command.sequence_number()) + ": " + *problem);
       return;
     }
@@ -103,7 +103,7 @@ bool DisplaysComponent::check_new_state(const runtime::FrameContext& frame) {
 
 void DisplaysComponent::render_all(const runtime::FrameContext& frame) {
   const msg::AircraftState& state = *aircraft_state_.latest();
-  DisplayContext context;
+  symbology_mapping::DisplayContext context;
   std::vector<Navaid> navaids;
   if (setup_.navdb) {
     NearbyNavaids near = nearby_navaids(*setup_.navdb, state.latitude_rad(), state.longitude_rad(), setup_.nd_range_nm);
@@ -161,7 +161,7 @@ void DisplaysComponent::write_snapshot(std::size_t i, const runtime::FrameContex
   const std::string path =
       (std::filesystem::path(setup_.snapshot_dir) / (setup_.displays[i].name + "_" + tag + ".png")).string();
   try {
-    visual::write_png(out.image, path);
+    picture::write_png(out.image, path);
     ++out.snapshots;
     log().info("snapshot frame={} t={:.2f}s -> {}", frame.frame, frame.sim_time_s, path);
   } catch (const std::exception& e) {
@@ -171,9 +171,9 @@ void DisplaysComponent::write_snapshot(std::size_t i, const runtime::FrameContex
 
 void DisplaysComponent::publish_picture(std::size_t i) {
   Drawn& out = drawn_[i];
-  const visual::Image& source = setup_.jpeg.downscale > 1 ? (scaled_ = visual::downscale(out.image, setup_.jpeg.downscale))
+  const picture::Image& source = setup_.jpeg.downscale > 1 ? (scaled_ = picture::downscale(out.image, setup_.jpeg.downscale))
                                                           : out.image;
-  visual::encode_jpeg(source, setup_.jpeg, out.picture.data());
+  picture::encode_jpeg(source, setup_.jpeg, out.picture.data());
   if (out.picture.data().size() > msg::VISUAL_PICTURE_MAX_BYTES) {
     report_fault("picture_too_large", setup_.displays[i].name + ": " + std::to_string(out.picture.data().size()) +
                                           " bytes: lower --jpeg-quality or raise --stream-downscale");
@@ -216,7 +216,7 @@ void DisplaysComponent::on_stop() {
       continue;
     }
     try {
-      visual::write_png(drawn_[i].image, path);
+      picture::write_png(drawn_[i].image, path);
     } catch (const std::exception& e) {
       report_fault("final_png_failed", e.what());
       continue;
@@ -321,7 +321,7 @@ runtime::FederateProgram program() {
     setup.state_qos = o->state_qos;
     setup.read_autopilot = !o->no_autopilot;
     setup.renderer = std::make_unique<DisplayRenderer>(
-        visual::make_gl_context(*visual::parse_gl_backend(o->gl), &setup.gl_note), default_font_paths(), o->samples);
+        gl::make_gl_context(*gl::parse_gl_backend(o->gl), &setup.gl_note), symbology::default_font_paths(), o->samples);
     return std::unique_ptr<runtime::Component>(std::make_unique<DisplaysComponent>(common.name, std::move(setup)));
   };
   return p;

@@ -27,12 +27,12 @@
 #pragma once
 
 #include "common/navdb/nav_database.hpp"
+#include "common/picture/image.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
 #include "displays/display_mapping.hpp"
 #include "displays/model/display_renderer.hpp"
-#include "visual/model/image.hpp"
-#include "visual/model/jpeg_encoder.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -58,7 +58,7 @@ struct DisplaysSetup {
   std::unique_ptr<DisplayRenderer> renderer;
   double render_hz = 10.0;                // pictures per second of frames (at most one per frame) [Hz]
   double stream_hz = 2.0;                 // JPEGs published per second of frames (0: none) [Hz]
-  visual::JpegOptions jpeg{80, 1};
+  picture::JpegOptions jpeg{80, 1};
   double nd_range_nm = 40.0;              // the ND's range selector [NM]
   std::shared_ptr<const nav::NavDatabase> navdb;  // navaids on the ND, magnetic variation (null: none, 0)
   std::string snapshot_dir = ".";
@@ -78,11 +78,11 @@ class DisplaysComponent final : public runtime::Component {
   void on_stop() override;
 
   /// The last picture of a display (for tests); empty before the first.
-  const visual::Image& image(std::size_t display) const { return drawn_[display].image; }
+  const picture::Image& image(std::size_t display) const { return drawn_[display].image; }
 
  private:
   struct Drawn {
-    visual::Image image;
+    picture::Image image;
     bool have = false;
     std::uint64_t frames = 0, pictures = 0;
     std::uint32_t snapshots = 0;
@@ -108,7 +108,7 @@ class DisplaysComponent final : public runtime::Component {
   bool state_usable_ = false;
   std::int64_t last_render_slot_ = -1;
   msg::FrameStamp image_stamp_;
-  visual::Image scaled_;
+  picture::Image scaled_;
   std::int64_t rate_window_start_ns_ = 0;
   std::uint32_t rate_window_renders_ = 0;
   float frame_rate_hz_ = 0.0f;  // pictures per wall-clock second, last full window [Hz]

@@ -1,8 +1,8 @@
 #include "nav/nav_component.hpp"
 #include "common/util/cli_checks.hpp"
 
+#include "common/radio/approach_geometry.hpp"
 #include "common/units/units.hpp"
-#include "nav/model/radio/approach_geometry.hpp"
 
 #include <cmath>
 #include <limits>
@@ -12,25 +12,25 @@ namespace fedsim::nav {
 
 namespace {
 
-msg::SignalStatus to_message(SignalStatus s) {
+msg::SignalStatus to_message(radio::SignalStatus s) {
   switch (s) {
-    case SignalStatus::kValid: return msg::SIGNAL_VALID;
-    case SignalStatus::kInvalidInput: return msg::SIGNAL_INVALID_INPUT;
-    case SignalStatus::kNotTuned: return msg::SIGNAL_NOT_TUNED;
-    case SignalStatus::kNoStation: return msg::SIGNAL_NO_STATION;
-    case SignalStatus::kReceiverFailed: return msg::SIGNAL_RECEIVER_FAILED;
-    case SignalStatus::kStationOffAir: return msg::SIGNAL_STATION_OFF_AIR;
-    case SignalStatus::kOutOfServiceVolume: return msg::SIGNAL_OUT_OF_SERVICE_VOLUME;
-    case SignalStatus::kBelowRadioHorizon: return msg::SIGNAL_BELOW_RADIO_HORIZON;
-    case SignalStatus::kConeOfConfusion: return msg::SIGNAL_CONE_OF_CONFUSION;
-    case SignalStatus::kOutsideCoverage: return msg::SIGNAL_OUTSIDE_COVERAGE;
-    case SignalStatus::kBehindAntenna: return msg::SIGNAL_BEHIND_ANTENNA;
+    case radio::SignalStatus::kValid: return msg::SIGNAL_VALID;
+    case radio::SignalStatus::kInvalidInput: return msg::SIGNAL_INVALID_INPUT;
+    case radio::SignalStatus::kNotTuned: return msg::SIGNAL_NOT_TUNED;
+    case radio::SignalStatus::kNoStation: return msg::SIGNAL_NO_STATION;
+    case radio::SignalStatus::kReceiverFailed: return msg::SIGNAL_RECEIVER_FAILED;
+    case radio::SignalStatus::kStationOffAir: return msg::SIGNAL_STATION_OFF_AIR;
+    case radio::SignalStatus::kOutOfServiceVolume: return msg::SIGNAL_OUT_OF_SERVICE_VOLUME;
+    case radio::SignalStatus::kBelowRadioHorizon: return msg::SIGNAL_BELOW_RADIO_HORIZON;
+    case radio::SignalStatus::kConeOfConfusion: return msg::SIGNAL_CONE_OF_CONFUSION;
+    case radio::SignalStatus::kOutsideCoverage: return msg::SIGNAL_OUTSIDE_COVERAGE;
+    case radio::SignalStatus::kBehindAntenna: return msg::SIGNAL_BEHIND_ANTENNA;
   }
   return msg::SIGNAL_INVALID_INPUT;
 }
 
-msg::ToFromFlag to_message(ToFrom f) {
-  return f == ToFrom::kTo ? msg::TO_FROM_TO : f == ToFrom::kFrom ? msg::TO_FROM_FROM : msg::TO_FROM_OFF;
+msg::ToFromFlag to_message(radio::ToFrom f) {
+  return f == radio::ToFrom::kTo ? msg::TO_FROM_TO : f == radio::ToFrom::kFrom ? msg::TO_FROM_FROM : msg::TO_FROM_OFF;
 }
 
 msg::MarkerBeaconKind to_message(MarkerBeacon b) {
@@ -49,26 +49,26 @@ std::string bounded(std::string_view s) { return std::string(s.substr(0, 8)); }
 // localizer's full-scale angle, the distances from both antennas and, along the course, to the
 // threshold (the distance from the antenna projected on the course line, less the antenna's
 // distance to the threshold).
-void fill_ils_geometry(const NavReading& r, msg::NavReceiver& out) {
-  const bool localizer = r.valid() && r.signal == NavSignal::kLocalizer && r.approach != nullptr;
-  const LocalizerReading& loc = r.localizer;
+void fill_ils_geometry(const radio::NavReading& r, msg::NavReceiver& out) {
+  const bool localizer = r.valid() && r.signal == radio::NavSignal::kLocalizer && r.approach != nullptr;
+  const radio::LocalizerReading& loc = r.localizer;
   out.localizer_half_width_rad(localizer ? loc.course_half_width_rad : 0.0);
   out.localizer_distance_m(localizer ? loc.distance_from_antenna_m : 0.0);
   out.threshold_distance_m(localizer ? loc.distance_from_antenna_m * std::cos(loc.angle_off_course_rad) -
-                                           approach_geometry(*r.approach).threshold_along_m
+                                           radio::approach_geometry(*r.approach).threshold_along_m
                                      : 0.0);
   out.glideslope_distance_m(localizer && r.glide_slope.valid() ? r.glide_slope.distance_from_antenna_m : 0.0);
 }
 
-void fill_receiver(const NavReading& r, const NavTuning& tuning, msg::NavReceiver& out) {
+void fill_receiver(const radio::NavReading& r, const radio::NavTuning& tuning, msg::NavReceiver& out) {
   out.frequency_khz(tuning.frequency_khz);
   out.obs_course_magnetic_rad(tuning.obs_course_magnetic_rad);
-  out.signal(r.signal == NavSignal::kVor         ? msg::NAV_SIGNAL_VOR
-             : r.signal == NavSignal::kLocalizer ? msg::NAV_SIGNAL_LOCALIZER
+  out.signal(r.signal == radio::NavSignal::kVor         ? msg::NAV_SIGNAL_VOR
+             : r.signal == radio::NavSignal::kLocalizer ? msg::NAV_SIGNAL_LOCALIZER
                                                  : msg::NAV_SIGNAL_NONE);
   out.status(to_message(r.status));
   out.ident(bounded(r.ident()));
-  const bool vor = r.valid() && r.signal == NavSignal::kVor;
+  const bool vor = r.valid() && r.signal == radio::NavSignal::kVor;
   out.radial_magnetic_rad(vor ? r.vor.radial_magnetic_rad : 0.0);
   out.bearing_to_station_true_rad(r.bearing_to_station_true_rad());
   out.course_true_rad(r.course_true_rad());
@@ -180,7 +180,7 @@ NavComponent::NavComponent(std::string name, NavSetup setup)
 
 void NavComponent::apply_failure(const std::string& target, bool active) {
   AvionicsFailures& f = suite_->failures();
-  const auto station = [&](std::string_view prefix, StationComponent component) {
+  const auto station = [&](std::string_view prefix, radio::StationComponent component) {
     if (target.rfind(prefix, 0) != 0 || target.size() == prefix.size()) return false;
     f.stations.set_off_air(target.substr(prefix.size()), component, active);
     return true;
@@ -191,10 +191,10 @@ void NavComponent::apply_failure(const std::string& target, bool active) {
   else if (target == "markers") f.markers = active;
   else if (target == "ins") f.ins = active;
   else if (target == "gps") f.gps_denied = active;
-  else if (station("station:", StationComponent::kAll) ||
-           station("station-dme:", StationComponent::kDme) ||
-           station("station-gs:", StationComponent::kGlideSlope) ||
-           station("station-markers:", StationComponent::kMarkers)) {
+  else if (station("station:", radio::StationComponent::kAll) ||
+           station("station-dme:", radio::StationComponent::kDme) ||
+           station("station-gs:", radio::StationComponent::kGlideSlope) ||
+           station("station-markers:", radio::StationComponent::kMarkers)) {
   } else {
     return;  // another federate's system (engine1, ...)
   }

@@ -1,17 +1,17 @@
 #include "visual/visual_component.hpp"
 #include "common/util/build_paths.hpp"
 
+#include "common/aircraft_pack/pack_facts.hpp"
+#include "common/aircraft_pack/pack_path.hpp"
 #include "common/frame_clock/rate_slot.hpp"
+#include "common/gl/egl_context.hpp"
+#include "common/hud/composite.hpp"
 #include "common/navdb/nav_database.hpp"
+#include "common/picture/snapshot_tag.hpp"
 #include "common/units/units.hpp"
 #include "common/util/cli_checks.hpp"
 #include "common/util/monotonic_clock.hpp"
-#include "flight/federate/start_options.hpp"
-#include "flight/model/aircraft/aircraft_model.hpp"
-#include "flight/model/aircraft/aircraft_pack.hpp"
-#include "displays/model/composite.hpp"
 #include "visual/model/channel_file.hpp"
-#include "visual/model/egl_context.hpp"
 #include "visual/model/eye_extrapolation.hpp"
 
 #include <algorithm>
@@ -62,14 +62,6 @@ UtcTime advanced(UtcTime t, double span_s) {
 }
 
 }  // namespace
-
-std::optional<std::string> snapshot_tag_problem(const std::string& tag) {
-  if (tag.size() > 48) return "snapshot tag longer than 48 characters";
-  if (tag.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
-    return "snapshot tag '" + tag + "': only [A-Za-z0-9_-] (it becomes part of a file name)";
-  }
-  return std::nullopt;
-}
 
 std::optional<std::string> apply_weather(const msg::WeatherSettings& w, Environment& environment) {
   Environment next = environment;
@@ -161,7 +153,7 @@ void VisualComponent::on_command(const msg::SimCommand& command) {
       if (!target.empty() && target != setup_.channel.name) return;
       if (static_cast<std::int64_t>(command.snapshot().issued_utc_ns()) < setup_.start_utc_ns) return;  // history
       const std::string tag = command.snapshot().tag().to_string();
-      problem = snapshot_tag_problem(tag);
+      problem = picture::snapshot_tag_problem(tag);
       if (!problem) pending_snapshot_ = tag;
       break;
     }
@@ -230,16 +222,16 @@ std::optional<VisualComponent::Drawn> VisualComponent::render(const runtime::Fra
 }
 
 void VisualComponent::draw_hud(const msg::AircraftState& state, const EyePose& eye) {
-  displays::HudInputs in = displays::hud_inputs(state, navigation_state_->latest(), autopilot_state_->latest(),
-                                                setup_.hud_context);
+  hud::HudInputs in = symbology_mapping::hud_inputs(state, navigation_state_->latest(), autopilot_state_->latest(),
+                                                    setup_.hud_context);
   // The attitude the scene was drawn with (carried forward to the display time), so that the
   // conformal symbols fall on the scene's horizon and runway.
   in.pitch_rad = eye.theta_rad;
   in.roll_rad = eye.phi_rad;
   in.heading_true_rad = std::fmod(eye.psi_rad + 2.0 * units::kTwoPi, units::kTwoPi);
   try {
-    setup_.hud->render_hud(in, setup_.channel, hud_image_);
-    displays::composite_over(image_, hud_image_);
+    setup_.hud->render(in, setup_.channel, hud_image_);
+    hud::composite_over(image_, hud_image_);
   } catch (const std::invalid_argument& e) {
     report_fault("input_rejected", std::string("HUD not drawn: ") + e.what());
   }
@@ -272,7 +264,7 @@ void VisualComponent::write_snapshot(const runtime::FrameContext& frame) {
   pending_snapshot_.reset();
   const std::string path = (std::filesystem::path(setup_.snapshot_dir) / (setup_.channel.name + "_" + tag + ".png")).string();
   try {
-    write_png(image_, path);
+    picture::write_png(image_, path);
     ++snapshots_written_;
     log().info("snapshot frame={} t={:.2f}s -> {}", frame.frame, frame.sim_time_s, path);
   } catch (const std::exception& e) {
@@ -286,9 +278,9 @@ void VisualComponent::publish_picture(const runtime::FrameContext& frame) {
   const std::int64_t slot = timing::rate_slot(frame.frame, period, setup_.stream_hz);
   if (slot == last_stream_slot_) return;
   last_stream_slot_ = slot;
-  if (setup_.jpeg.downscale > 1) scaled_ = downscale(image_, setup_.jpeg.downscale);
-  const Image& source = setup_.jpeg.downscale > 1 ? scaled_ : image_;
-  encode_jpeg(source, setup_.jpeg, picture_.data());
+  if (setup_.jpeg.downscale > 1) scaled_ = picture::downscale(image_, setup_.jpeg.downscale);
+  const picture::Image& source = setup_.jpeg.downscale > 1 ? scaled_ : image_;
+  picture::encode_jpeg(source, setup_.jpeg, picture_.data());
   if (picture_.data().size() > msg::VISUAL_PICTURE_MAX_BYTES) {
     report_fault("picture_too_large", std::to_string(picture_.data().size()) + " bytes (at most " +
                                           std::to_string(msg::VISUAL_PICTURE_MAX_BYTES) +
@@ -316,7 +308,7 @@ bool VisualComponent::capture_due() {
 void VisualComponent::write_capture() {
   captured_ = true;
   try {
-    write_png(image_, setup_.capture_png);
+    picture::write_png(image_, setup_.capture_png);
     log().info("at {:.0f} ft above the runway (frame {}, t={:.2f}s) -> {}", setup_.capture_agl_m * units::kMToFt,
                image_stamp_.frame(), image_stamp_.sim_time_s(), setup_.capture_png);
   } catch (const std::exception& e) {
@@ -348,7 +340,7 @@ void VisualComponent::on_stop() {
     log().warn("no image was rendered (no aircraft state arrived): {} not written", setup_.final_png);
     return;
   }
-  write_png(image_, setup_.final_png);
+  picture::write_png(image_, setup_.final_png);
   log().info("last image (frame {}, t={:.2f}s) -> {}", image_stamp_.frame(), image_stamp_.sim_time_s(), setup_.final_png);
 }
 
@@ -394,13 +386,6 @@ AirportSceneOptions scene_options(const nav::NavDatabase& db, const Options& o) 
                          options.default_end.glide_path_rad};
   }
   return options;
-}
-
-Eigen::Vector3d eye_from_cg(const std::string& aircraft) {
-  flight::AircraftPack pack = flight::load_aircraft_pack(flight::resolve_pack_path(aircraft));
-  const Eigen::Vector3d eye = pack.geometry.pilot_eye_point_m;
-  flight::AircraftModel model(std::move(pack), {});
-  return eye - model.outputs().cg_m;
 }
 
 }  // namespace
@@ -451,17 +436,20 @@ runtime::FederateProgram program() {
   };
   p.make_component = [o](const runtime::FederateOptions& common) {
     VisualSetup setup;
-    const std::vector<ChannelConfig> channels = load_channels(o->channels);
+    const std::vector<view::ChannelConfig> channels = load_channels(o->channels);
     const std::size_t index = channel_index(channels, o->channel, o->channels);
     setup.channel = channels[index];
     setup.channel_id = static_cast<std::uint16_t>(o->channel_id >= 0 ? o->channel_id : static_cast<int>(index));
-    if (!o->aircraft.empty()) setup.channel.eye_offset_body_m += eye_from_cg(o->aircraft);
+    if (!o->aircraft.empty()) {
+      setup.channel.eye_offset_body_m +=
+          aircraft_pack::eye_from_cg_m(aircraft_pack::load_pack_facts(aircraft_pack::resolve_pack_path(o->aircraft)));
+    }
     const nav::NavDatabase db = nav::NavDatabase::open(o->navdb.empty() ? nav::default_database_path() : o->navdb);
     const std::vector<nav::RunwayEndRecord> ends = db.airport_runways(o->airport);
     if (ends.empty()) throw std::invalid_argument("--airport " + o->airport + ": no runways in " + db.path());
-    const GlBackend backend = *parse_gl_backend(o->gl);
+    const gl::GlBackend backend = *gl::parse_gl_backend(o->gl);
     setup.renderer = std::make_unique<Renderer>(build_airport_scene(ends, scene_options(db, *o)),
-                                                make_gl_context(backend, &setup.gl_note));
+                                                gl::make_gl_context(backend, &setup.gl_note));
     setup.render_hz = o->render_hz;
     setup.stream_hz = o->stream_hz;
     setup.jpeg = {o->jpeg_quality, o->stream_downscale};
@@ -487,10 +475,10 @@ runtime::FederateProgram program() {
     setup.start_utc_ns = utc_ns();
     setup.state_qos = o->state_qos;
     if (o->hud) {
-      setup.hud = std::make_unique<displays::DisplayRenderer>(make_gl_context(backend), displays::default_font_paths());
+      setup.hud = std::make_unique<hud::HudRenderer>(gl::make_gl_context(backend), symbology::default_font_paths());
       const nav::RunwayEndRecord& first = ends.front();
       setup.hud_context.magnetic_variation_rad =
-          displays::nearby_navaids(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0).magnetic_variation_rad;
+          symbology_mapping::magnetic_variation_near(db, first.threshold.lat_rad, first.threshold.lon_rad, 40.0);
     }
     return std::unique_ptr<runtime::Component>(std::make_unique<VisualComponent>(common.name, std::move(setup)));
   };

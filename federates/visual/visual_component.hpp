@@ -10,9 +10,9 @@
 //   commands weather (visibility, cloud base), time of day (sun, lights), snapshot (a PNG)
 //   with --hud also reads fedsim/autopilot_state and fedsim/navigation_state (the FD cue)
 //
-// HUD (--hud, seed 5.9): the displays model's HUD (federates/displays) drawn for this channel's
-// camera (its ChannelConfig: size, field of view, offsets) from the same extrapolated eye
-// attitude the scene was drawn with, composited over the picture (premultiplied "over") before
+// HUD (--hud, seed 5.9): common/hud's HUD (in the cockpit displays' symbology) drawn for this
+// channel's camera (its ChannelConfig: size, field of view, offsets) from the same extrapolated
+// eye attitude the scene was drawn with, composited over the picture (premultiplied "over") before
 // it is published, snapshot or written, so that the flight-path vector and the horizon line
 // lie on the scene's.
 //
@@ -28,14 +28,14 @@
 // picture stays), "command_rejected" (a weather, time-of-day or snapshot command out of range).
 #pragma once
 
+#include "common/hud/hud_renderer.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/component.hpp"
 #include "common/runtime/federate_main.hpp"
-#include "displays/display_mapping.hpp"
-#include "displays/model/display_renderer.hpp"
+#include "common/symbology_mapping/symbology_mapping.hpp"
+#include "common/view/channel_config.hpp"
 #include "visual/model/airport_scene.hpp"
-#include "visual/model/channel_config.hpp"
 #include "visual/model/environment.hpp"
-#include "visual/model/jpeg_encoder.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/sun_position.hpp"
 
@@ -47,12 +47,12 @@
 namespace fedsim::visual {
 
 struct VisualSetup {
-  ChannelConfig channel;             // the eye-point offset from the pack already added
+  view::ChannelConfig channel;             // the eye-point offset from the pack already added
   std::uint16_t channel_id = 0;      // 0 centre, then left, right...
   std::unique_ptr<Renderer> renderer;
   double render_hz = 30.0;           // images per second of frames (at most one per frame) [Hz]
   double stream_hz = 5.0;            // pictures published per second of frames (0: none) [Hz]
-  JpegOptions jpeg{75, 2};
+  picture::JpegOptions jpeg{75, 2};
   std::string snapshot_dir = ".";    // where snapshot PNGs go
   std::string final_png;             // the last image written here on stop ("" = none)
   // The picture at a height (the decision height of an approach): the first image whose aircraft
@@ -66,13 +66,11 @@ struct VisualSetup {
   bool time_of_day_set = true;       // false: the environment's own sun stays
   std::int64_t start_utc_ns = 0;     // snapshot requests issued before this are history
   std::string state_qos;             // profile of the aircraft-state reader ("" = catalogue)
-  std::unique_ptr<displays::DisplayRenderer> hud;  // the HUD drawn over the picture (null: none)
-  displays::DisplayContext hud_context;            // the magnetic variation its heading scale uses
+  std::unique_ptr<hud::HudRenderer> hud;            // the HUD drawn over the picture (null: none)
+  symbology_mapping::DisplayContext hud_context;   // the magnetic variation its heading scale uses
   std::string gl_note;                             // why --gl auto fell back to OSMesa ("" = it did not)
 };
 
-/// A snapshot tag is [A-Za-z0-9_-]{0,48} (it becomes part of a file name); the problem or nullopt.
-std::optional<std::string> snapshot_tag_problem(const std::string& tag);
 /// The environment after a weather command (visibility <= 0: unchanged; cloud base <= 0: no
 /// cloud, else a 1000 m deep layer from that height above the airport), or the problem.
 std::optional<std::string> apply_weather(const msg::WeatherSettings& weather, Environment& environment);
@@ -111,7 +109,7 @@ class VisualComponent final : public runtime::Component {
   runtime::Output<msg::VisualChannelStatus>& visual_status_;
   runtime::Output<msg::VisualPicture>& visual_picture_;
   VisualSetup setup_;
-  Image image_;
+  picture::Image image_;
   bool have_image_ = false;
   std::uint64_t state_seen_ = 0;
   bool state_usable_ = false;
@@ -128,8 +126,8 @@ class VisualComponent final : public runtime::Component {
   std::int64_t rate_window_start_ns_ = 0;
   std::uint32_t rate_window_images_ = 0;
   float frame_rate_hz_ = 0.0f;
-  Image scaled_;  // the picture reduced for the stream
-  Image hud_image_;
+  picture::Image scaled_;  // the picture reduced for the stream
+  picture::Image hud_image_;
   msg::VisualChannelStatus status_;
   msg::VisualPicture picture_;
 };

@@ -11,8 +11,8 @@
 #include "common/runtime/topic_catalogue.hpp"
 #include "common/csv/csv_reader.hpp"
 #include "io/model/input_profile.hpp"
-#include "visual/model/image.hpp"
-#include "visual/model/jpeg_encoder.hpp"
+#include "common/picture/image.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -868,12 +868,12 @@ TEST(Federation, AVisualChannelDrawsTheApproachAndSnapshotsOnCommand) {
   for (auto* p : {io.get(), flight.get(), visual.get()}) ASSERT_TRUE(p->wait(20)) << p->output();
   EXPECT_EQ(visual->exit_code(), 0) << visual->output();
 
-  const visual::Image snapshot = visual::read_png(dir + "/centre_approach.png");
+  const picture::Image snapshot = picture::read_png(dir + "/centre_approach.png");
   EXPECT_EQ(snapshot.width_px, 800);
   EXPECT_EQ(snapshot.height_px, 600);
   EXPECT_FALSE(std::filesystem::exists(dir + "/centre_other.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/left_other.png"));
-  const visual::Image last = visual::read_png(dir + "/final.png");
+  const picture::Image last = picture::read_png(dir + "/final.png");
   EXPECT_EQ(last.width_px, 800);
   // The picture is a scene: sky above the horizon, the ground below differ.
   double top = 0, bottom = 0;
@@ -889,7 +889,7 @@ TEST(Federation, AVisualChannelDrawsTheApproachAndSnapshotsOnCommand) {
   EXPECT_LE(seen.status.state_age_ms(), 250.0f);
   EXPECT_EQ(seen.status.snapshots_written(), 1u);
   ASSERT_GE(seen.pictures, 2);
-  const visual::Image picture = visual::decode_jpeg(seen.jpeg.data(), seen.jpeg.size());
+  const picture::Image picture = picture::decode_jpeg(seen.jpeg.data(), seen.jpeg.size());
   EXPECT_EQ(picture.width_px, 400);
   EXPECT_EQ(seen.picture_width, 400);
   std::printf("visual channel: %llu images, render %.1f ms, state age %.1f ms, %d pictures of %zu bytes\n",

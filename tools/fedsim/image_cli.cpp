@@ -1,6 +1,6 @@
 #include "fedsim/image_cli.hpp"
 
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 #include "visual/model/montage.hpp"
 
 #include <iostream>
@@ -12,9 +12,9 @@ namespace fedsim::launcher {
 int image_montage(const std::string& out_path, const std::vector<std::string>& inputs, int gap_px,
                   std::ostream& err) {
   try {
-    std::vector<visual::Image> images;
-    for (const std::string& path : inputs) images.push_back(visual::read_png(path));
-    visual::write_png(visual::side_by_side(images, gap_px, {16, 16, 16, 255}), out_path);
+    std::vector<picture::Image> images;
+    for (const std::string& path : inputs) images.push_back(picture::read_png(path));
+    picture::write_png(visual::side_by_side(images, gap_px, {16, 16, 16, 255}), out_path);
     return 0;
   } catch (const std::exception& e) {
     err << "fedsim image montage: " << e.what() << "\n";

@@ -10,7 +10,7 @@
 #include "common/util/monotonic_clock.hpp"
 #include "fedsim/deployment.hpp"
 #include "fedsim/latency_detect.hpp"
-#include "visual/model/jpeg_encoder.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -470,7 +470,7 @@ struct Analysis {
       double scene_x_px = 0.0;  // yaw: the picture's content moved this far sideways since the first
       for (const auto& [frame, p] : pictures) {
         try {
-          const visual::Image image = visual::decode_jpeg(p->jpeg.data(), p->jpeg.size());
+          const picture::Image image = picture::decode_jpeg(p->jpeg.data(), p->jpeg.size());
           double value = 0.0;
           if (o.axis == "yaw") {
             latency::Luma luma = latency::luminance(image);

@@ -138,7 +138,7 @@ ChannelOnset earliest_onset(const std::vector<std::vector<Point>>& channels, std
   return best;
 }
 
-double blueness(const visual::Image& image, double first_column, double end_column) {
+double blueness(const picture::Image& image, double first_column, double end_column) {
   const std::size_t pixels = static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px);
   if (pixels == 0 || image.rgba.size() < pixels * 4) throw std::invalid_argument("blueness: empty image");
   if (!(first_column >= 0.0 && first_column < end_column && end_column <= 1.0)) {
@@ -158,7 +158,7 @@ namespace {
 
 // The mean of max(blue - red, 0) / 255 over columns [c0, c1) and rows [r0, r1): the sky's
 // blueness alone.
-double sky_blueness(const visual::Image& image, int c0, int c1, int r0, int r1) {
+double sky_blueness(const picture::Image& image, int c0, int c1, int r0, int r1) {
   long long sum = 0;
   for (int row = r0; row < r1; ++row) {
     const std::uint8_t* px = &image.rgba[(static_cast<std::size_t>(row) * image.width_px + c0) * 4];
@@ -174,7 +174,7 @@ bool region_valid(const Region& g) {
 
 }  // namespace
 
-double blueness_tilt(const visual::Image& image, const Region& region) {
+double blueness_tilt(const picture::Image& image, const Region& region) {
   const std::size_t pixels = static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px);
   if (pixels == 0 || image.rgba.size() < pixels * 4) throw std::invalid_argument("blueness_tilt: empty image");
   if (!region_valid(region)) throw std::invalid_argument("blueness_tilt: the region must lie within 0..1, first < end");
@@ -187,7 +187,7 @@ double blueness_tilt(const visual::Image& image, const Region& region) {
   return sky_blueness(image, c0, c1, r0, r1) - sky_blueness(image, c1, c2, r0, r1);
 }
 
-Luma luminance(const visual::Image& image) {
+Luma luminance(const picture::Image& image) {
   const std::size_t pixels = static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px);
   if (pixels == 0 || image.rgba.size() < pixels * 4) throw std::invalid_argument("luminance: empty image");
   Luma l{image.width_px, image.height_px, std::vector<float>(pixels)};

@@ -13,7 +13,7 @@
 // engaged); with nothing moving, the residuals are 0 and min_threshold alone decides.
 #pragma once
 
-#include "visual/model/image.hpp"
+#include "common/picture/image.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -70,7 +70,7 @@ ChannelOnset earliest_onset(const std::vector<std::vector<Point>>& channels, std
 /// above the horizon, scaled: it moves when the horizon does (pitch), smoothly with the
 /// anti-aliased edge, and hardly when the ground texture scrolls. Throws for an empty image or
 /// a column range outside 0..1.
-double blueness(const visual::Image& image, double first_column = 0.0, double end_column = 1.0);
+double blueness(const picture::Image& image, double first_column = 0.0, double end_column = 1.0);
 
 /// A rectangle of a picture as fractions of its width and height (0..1, first < end).
 struct Region {
@@ -85,7 +85,7 @@ struct Region {
 /// so that the ground texture's colours (green and brown: red above blue), which flow past with
 /// the aircraft and differ between the halves, add nothing. Throws for an empty image or a
 /// region outside 0..1 or less than two columns wide.
-double blueness_tilt(const visual::Image& image, const Region& region = {});
+double blueness_tilt(const picture::Image& image, const Region& region = {});
 
 /// A picture's luminance (BT.709, 0..255) as floats, rows from the top: what image_shift compares.
 struct Luma {
@@ -94,7 +94,7 @@ struct Luma {
   std::vector<float> value;  // width_px * height_px
   float at(int column, int row) const { return value[static_cast<std::size_t>(row) * width_px + column]; }
 };
-Luma luminance(const visual::Image& image);
+Luma luminance(const picture::Image& image);
 
 /// How far the content of `current` moved from where it was in `previous` [px; + right, + down]:
 /// the translation d with current(x) ~ previous(x - d) over `region` (less a margin of 4 px),

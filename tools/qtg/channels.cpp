@@ -71,7 +71,7 @@ const std::vector<Derivation>& derivations() {
 }
 
 // ILS deviations in dots: the recorded deviation is -1..1 of full scale (150 uA, DDM 0.155
-// localizer / 0.175 glide slope, federates/nav/model/radio) and full scale is two dots on the
+// localizer / 0.175 glide slope, common/radio) and full scale is two dots on the
 // 737's PFD and on a standard CDI (one dot 75 uA: DDM 0.0775 localizer, 0.0875 glide slope).
 constexpr double kDotsPerFullScale = 2.0;
 

@@ -1,7 +1,8 @@
 #include "displays/model/display_inputs.hpp"
 
+#include "common/symbology/input_checks.hpp"
 #include "common/units/units.hpp"
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <cmath>
 #include <string>
@@ -10,19 +11,15 @@ namespace fedsim::displays {
 
 namespace {
 
-using units::kDegToRad;
-using visual::reject;
-using visual::require_in_range;
+using symbology::check_angle;
+using symbology::kMaxSpeedMps;
+using symbology::kMaxVerticalMps;
+using util::reject;
+using util::require_in_range;
 
-constexpr double kMaxSpeedMps = 400.0;     // the tapes' top (778 kt)
 constexpr double kMaxTrendMps = 100.0;     // a 10 s speed change beyond this is a bad input
-constexpr double kMaxVerticalMps = 150.0;  // 29 500 ft/min
 constexpr double kMaxHeightChangeM = 2000.0;
 constexpr std::size_t kIdentChars = 5;
-
-void check_angle(double value, double limit_deg, std::string_view where, std::string_view field) {
-  require_in_range(value, -limit_deg * kDegToRad, limit_deg * kDegToRad, where, field, "rad");
-}
 
 void check_text(const std::string& text, std::size_t max_chars, std::string_view where,
                 std::string_view field) {
@@ -38,11 +35,6 @@ void check_text(const std::string& text, std::size_t max_chars, std::string_view
 void check_optional(const std::optional<double>& v, double lo, double hi, std::string_view where,
                     std::string_view field, const char* unit) {
   if (v) require_in_range(*v, lo, hi, where, field, unit);
-}
-
-void check(const FlightDirector& fd, std::string_view where) {
-  check_angle(fd.pitch_command_rad, 90.0, where, "flight_director.pitch_command_rad");
-  check_angle(fd.roll_command_rad, 180.0, where, "flight_director.roll_command_rad");
 }
 
 void check(const FlightModes& m, std::string_view where) {
@@ -85,7 +77,7 @@ void validate(const PfdInputs& in, std::string_view where) {
                    "dots");
   require_in_range(in.glideslope_deviation_dots, -10.0, 10.0, where, "glideslope_deviation_dots",
                    "dots");
-  check(in.flight_director, where);
+  validate(in.flight_director, where);
   check(in.modes, where);
 }
 
@@ -138,23 +130,6 @@ void validate(const NdInputs& in, std::string_view where) {
   require_in_range(in.range_nm, 5.0, 640.0, where, "range_nm", "NM");
   check_optional(in.ground_speed_mps, 0.0, 1000.0, where, "ground_speed_mps", "m/s");
   check_optional(in.true_airspeed_mps, 0.0, 1000.0, where, "true_airspeed_mps", "m/s");
-}
-
-void validate(const HudInputs& in, std::string_view where) {
-  check_angle(in.pitch_rad, 90.0, where, "pitch_rad");
-  check_angle(in.roll_rad, 180.0, where, "roll_rad");
-  check_angle(in.heading_true_rad, 360.0, where, "heading_true_rad");
-  check_angle(in.magnetic_variation_rad, 180.0, where, "magnetic_variation_rad");
-  static constexpr const char* kVelocity[] = {"velocity_ned_mps[0]", "velocity_ned_mps[1]",
-                                              "velocity_ned_mps[2]"};
-  for (int i = 0; i < 3; ++i) {
-    require_in_range(in.velocity_ned_mps[i], -1000.0, 1000.0, where, kVelocity[i], "m/s");
-  }
-  require_in_range(in.ias_mps, 0.0, kMaxSpeedMps, where, "ias_mps", "m/s");
-  require_in_range(in.altitude_m, -1000.0, 20000.0, where, "altitude_m", "m");
-  require_in_range(in.vertical_speed_mps, -kMaxVerticalMps, kMaxVerticalMps, where,
-                   "vertical_speed_mps", "m/s");
-  check(in.flight_director, where);
 }
 
 }  // namespace fedsim::displays

@@ -1,6 +1,6 @@
-// What the cockpit displays show, one plain struct per display, in SI units (docs/frames.md):
-// angles in rad, speeds in m/s, heights in m, distances in m. Feet, knots, feet per minute and
-// nautical miles appear only in the pictures (and in NdInputs::range_nm, the pilot's range
+// What the cockpit displays show, one plain struct per display (the HUD's is common/hud's), in
+// SI units (docs/frames.md): angles in rad, speeds in m/s, heights in m, distances in m. Feet,
+// knots, feet per minute and nautical miles appear only in the pictures (and in NdInputs::range_nm, the pilot's range
 // selector, named so). The federate adapter fills these from the aircraft, navigation and
 // autopilot states (idl/navigation.idl, idl/autopilot.idl); the model knows no DDS type.
 //
@@ -15,10 +15,11 @@
 // not tuned to that kind of station shows neither scale nor flag (NavSignal::kNotTuned).
 //
 // validate_*() throws std::invalid_argument "<where>: field '<field>': <problem>" for a NaN, an
-// infinity, a value out of its range or a string too long to draw (visual/model/input_checks).
+// infinity, a value out of its range or a string too long to draw (common/util/input_checks,
+// common/symbology/input_checks).
 #pragma once
 
-#include <Eigen/Core>
+#include "common/symbology/flight_director.hpp"
 
 #include <optional>
 #include <string>
@@ -35,15 +36,6 @@ enum class NavSignal {
 };
 
 enum class MarkerBeacon { kNone, kOuter, kMiddle, kInner };
-
-/// Flight director commands (the autopilot's fd_* fields): absolute attitudes, not errors.
-struct FlightDirector {
-  bool on = false;                 // FD switch on: bars (valid) or the FD flag (not valid)
-  bool pitch_valid = false;        // a pitch mode is active
-  bool roll_valid = false;         // a roll mode is active
-  double pitch_command_rad = 0.0;  // commanded pitch attitude, + nose up [rad]
-  double roll_command_rad = 0.0;   // commanded bank, + right wing down [rad]
-};
 
 /// The flight mode annunciator: three columns over the attitude indicator (Boeing order:
 /// autothrottle, roll, pitch), each an active mode (green, upper line) and an armed one (white,
@@ -81,7 +73,7 @@ struct PfdInputs {
   double localizer_deviation_dots = 0.0;  // + fly right; clipped to the scale at +-2.5 [dots]
   NavSignal glideslope = NavSignal::kNotTuned;
   double glideslope_deviation_dots = 0.0;  // + fly up [dots]
-  FlightDirector flight_director;
+  symbology::FlightDirector flight_director;  // common/symbology/flight_director.hpp
   FlightModes modes;
   std::optional<double> radio_altitude_m;  // radio altimeter; drawn at or below 2500 ft [m]
   MarkerBeacon marker = MarkerBeacon::kNone;
@@ -126,20 +118,8 @@ struct NdInputs {
   std::optional<double> true_airspeed_mps;  // "TAS" readout [m/s]
 };
 
-struct HudInputs {
-  double pitch_rad = 0.0;               // + nose up [rad]
-  double roll_rad = 0.0;                // + right wing down [rad]
-  double heading_true_rad = 0.0;        // true heading: the conformal symbols need it [rad]
-  double magnetic_variation_rad = 0.0;  // east +; the heading scale shows true - variation [rad]
-  Eigen::Vector3d velocity_ned_mps = Eigen::Vector3d::Zero();  // over the ground: the FPV [m/s]
-  double ias_mps = 0.0;
-  double altitude_m = 0.0;
-  double vertical_speed_mps = 0.0;
-  FlightDirector flight_director;  // the guidance cue (a circle to fly the FPV onto)
-};
 
 void validate(const PfdInputs& in, std::string_view where);
 void validate(const NdInputs& in, std::string_view where);
-void validate(const HudInputs& in, std::string_view where);
 
 }  // namespace fedsim::displays

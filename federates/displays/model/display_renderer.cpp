@@ -1,223 +1,26 @@
 #include "displays/model/display_renderer.hpp"
 
-#include "displays/model/canvas.hpp"
-#include "displays/model/hud.hpp"
 #include "displays/model/nd.hpp"
 #include "displays/model/pfd.hpp"
-#include "visual/model/gl_program.hpp"
-#include "visual/model/input_checks.hpp"
-#include "visual/model/osmesa_context.hpp"
-#include "visual/model/render_target.hpp"
-
-#include <algorithm>
-#include <stdexcept>
 
 namespace fedsim::displays {
 
 namespace {
-
-using visual::GlApi;
-using visual::GlProgram;
-
-// Pixels (y down) to clip space; each fragment outside its vertex's clip rectangle is dropped.
-const char* const kVertexShader = R"(#version 330 core
-layout(location = 0) in vec2 a_position;
-layout(location = 1) in vec2 a_uv;
-layout(location = 2) in vec4 a_colour;
-layout(location = 3) in vec4 a_clip;
-uniform vec2 u_viewport;
-out vec2 v_position;
-out vec2 v_uv;
-out vec4 v_colour;
-flat out vec4 v_clip;
-void main() {
-  v_position = a_position;
-  v_uv = a_uv;
-  v_colour = a_colour;
-  v_clip = a_clip;
-  gl_Position = vec4(2.0 * a_position.x / u_viewport.x - 1.0,
-                     1.0 - 2.0 * a_position.y / u_viewport.y, 0.0, 1.0);
-}
-)";
-
-const char* const kFragmentShader = R"(#version 330 core
-in vec2 v_position;
-in vec2 v_uv;
-in vec4 v_colour;
-flat in vec4 v_clip;
-uniform sampler2D u_atlas;
-out vec4 o_colour;
-void main() {
-  if (v_position.x < v_clip.x || v_position.y < v_clip.y ||
-      v_position.x >= v_clip.z || v_position.y >= v_clip.w) discard;
-  float coverage = v_uv.x < 0.0 ? 1.0 : texture(u_atlas, v_uv).r;
-  o_colour = vec4(v_colour.rgb, v_colour.a * coverage);
-}
-)";
-
-void attribute(const GlApi& gl, GLuint index, int size, std::size_t offset_floats) {
-  gl.EnableVertexAttribArray(index);
-  gl.VertexAttribPointer(index, size, GL_FLOAT, GL_FALSE,
-                         static_cast<GLsizei>(Canvas::kFloatsPerVertex * sizeof(float)),
-                         reinterpret_cast<const void*>(offset_floats * sizeof(float)));
-}
-
-GLuint upload_atlas(const GlApi& gl, const FontAtlas& atlas) {
-  GLuint id = 0;
-  gl.GenTextures(1, &id);
-  gl.BindTexture(GL_TEXTURE_2D, id);
-  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.width(), atlas.height(), 0, GL_RED, GL_UNSIGNED_BYTE,
-                atlas.coverage().data());
-  gl.GenerateMipmap(GL_TEXTURE_2D);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return id;
-}
-
-void check_size(int width_px, int height_px, const char* where) {
-  visual::require_in_range(width_px, 16, 4096, where, "width_px");
-  visual::require_in_range(height_px, 16, 4096, where, "height_px");
-}
-
-}  // namespace
-
-struct DisplayRenderer::Impl {
-  Impl(std::unique_ptr<visual::GlContext> c, const FontPaths& fonts, int samples_in)
-      : context(std::move(c)),
-        gl((context->make_current(),
-            visual::GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
-        program(gl, "displays", kVertexShader, kFragmentShader),
-        atlas(fonts),
-        canvas(atlas),
-        samples(samples_in) {
-    if (samples != 1 && samples != 2 && samples != 4) {
-      throw std::invalid_argument("DisplayRenderer: samples must be 1, 2 or 4");
-    }
-    atlas_texture = upload_atlas(gl, atlas);
-    gl.GenVertexArrays(1, &vao);
-    gl.BindVertexArray(vao);
-    gl.GenBuffers(1, &vbo);
-    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-    attribute(gl, 0, 2, 0);
-    attribute(gl, 1, 2, 2);
-    attribute(gl, 2, 4, 4);
-    attribute(gl, 3, 4, 8);
-    gl.check("displays set-up");
-  }
-
-  ~Impl() {
-    context->make_current();
-    target.reset();
-    gl.DeleteBuffers(1, &vbo);
-    gl.DeleteVertexArrays(1, &vao);
-    gl.DeleteTextures(1, &atlas_texture);
-  }
-
-  double now_ms() const { return clock ? static_cast<double>(clock()) * 1.0e-6 : 0.0; }
-
-  // Draws what the canvas holds into a fresh picture cleared to `background`.
-  DisplayStats finish(const float background[4], visual::Image& image, double start_ms) {
-    const int w = canvas.width_px(), h = canvas.height_px();
-    if (!target || !target->matches(w, h, samples)) {
-      target.reset();
-      target = std::make_unique<visual::RenderTarget>(gl, w, h, samples);
-    }
-    target->bind_for_drawing();
-    gl.ClearColor(background[0], background[1], background[2], background[3]);
-    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.Disable(GL_DEPTH_TEST);
-    gl.Disable(GL_CULL_FACE);
-    gl.Enable(GL_BLEND);
-    // Colour blended by alpha, alpha accumulated: over a transparent clear this leaves
-    // premultiplied colour, what composite_over() expects.
-    gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    program.use();
-    program.set("u_viewport", Eigen::Vector2f(static_cast<float>(w), static_cast<float>(h)));
-    program.set("u_atlas", 0);
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D, atlas_texture);
-    gl.BindVertexArray(vao);
-    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-    const std::vector<float>& v = canvas.vertices();
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
-                  GL_STREAM_DRAW);
-    gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(canvas.vertex_count()));
-    target->read(image);
-    gl.check("displays frame");
-    DisplayStats stats;
-    stats.triangles = canvas.vertex_count() / 3;
-    if (clock) stats.render_time_ms = now_ms() - start_ms;
-    return stats;
-  }
-
-  std::unique_ptr<visual::GlContext> context;
-  GlApi gl;
-  GlProgram program;
-  FontAtlas atlas;
-  Canvas canvas;
-  int samples;
-  GLuint atlas_texture = 0;
-  GLuint vao = 0;
-  GLuint vbo = 0;
-  std::unique_ptr<visual::RenderTarget> target;
-  visual::FrameClock clock;
-};
-
-namespace {
 constexpr float kOpaqueBlack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-constexpr float kTransparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 }  // namespace
-
-DisplayRenderer::DisplayRenderer()
-    : DisplayRenderer(std::make_unique<visual::OsMesaContext>(), default_font_paths()) {}
-
-DisplayRenderer::DisplayRenderer(std::unique_ptr<visual::GlContext> context, const FontPaths& fonts,
-                                 int samples)
-    : impl_(std::make_unique<Impl>(std::move(context), fonts, samples)) {}
-
-DisplayRenderer::~DisplayRenderer() = default;
 
 DisplayStats DisplayRenderer::render_pfd(const PfdInputs& in, int width_px, int height_px,
-                                         visual::Image& image) {
-  check_size(width_px, height_px, "render_pfd");
-  impl_->context->make_current();
-  const double start = impl_->now_ms();
-  impl_->canvas.reset(width_px, height_px);
-  draw_pfd(impl_->canvas, in);
-  return impl_->finish(kOpaqueBlack, image, start);
+                                         picture::Image& image) {
+  symbology::check_picture_size(width_px, height_px, "render_pfd");
+  draw_pfd(canvas_.begin(width_px, height_px), in);
+  return canvas_.finish(kOpaqueBlack, image);
 }
 
 DisplayStats DisplayRenderer::render_nd(const NdInputs& in, int width_px, int height_px,
-                                        visual::Image& image) {
-  check_size(width_px, height_px, "render_nd");
-  impl_->context->make_current();
-  const double start = impl_->now_ms();
-  impl_->canvas.reset(width_px, height_px);
-  draw_nd(impl_->canvas, in);
-  return impl_->finish(kOpaqueBlack, image, start);
-}
-
-DisplayStats DisplayRenderer::render_hud(const HudInputs& in, const visual::ChannelConfig& channel,
-                                         visual::Image& image) {
-  visual::validate(channel, "render_hud channel");
-  check_size(channel.width_px, channel.height_px, "render_hud channel");
-  impl_->context->make_current();
-  const double start = impl_->now_ms();
-  impl_->canvas.reset(channel.width_px, channel.height_px);
-  draw_hud(impl_->canvas, in, channel);
-  return impl_->finish(kTransparent, image, start);
-}
-
-void DisplayRenderer::set_clock(visual::FrameClock clock) { impl_->clock = std::move(clock); }
-
-const FontAtlas& DisplayRenderer::atlas() const { return impl_->atlas; }
-
-std::string DisplayRenderer::description() const {
-  impl_->context->make_current();  // the description is read through the current context
-  return impl_->context->description();
+                                        picture::Image& image) {
+  symbology::check_picture_size(width_px, height_px, "render_nd");
+  draw_nd(canvas_.begin(width_px, height_px), in);
+  return canvas_.finish(kOpaqueBlack, image);
 }
 
 }  // namespace fedsim::displays

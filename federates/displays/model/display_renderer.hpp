@@ -1,67 +1,49 @@
-// Renders the cockpit displays off-screen: a display is drawn into a Canvas (pfd.hpp, nd.hpp,
-// hud.hpp), the canvas' triangles are drawn in one call with OpenGL 3.3 core into a
-// multisampled framebuffer (visual::RenderTarget, 4 samples: smooth lines and text) and read
-// back into a visual::Image (RGBA8, rows from the top; write_png() for a file).
+// Renders the cockpit displays off-screen: the PFD and the ND are drawn into a Canvas (pfd.hpp,
+// nd.hpp) and the canvas drawn with OpenGL 3.3 core into a picture by common/symbology's canvas
+// renderer (multisampled: smooth lines and text; FreeType, DejaVu). Both are opaque (black
+// background, alpha 255). The HUD, drawn with the same symbology for fedsim-visual's centre
+// channel, is common/hud's HudRenderer.
 //
-// The PFD and ND are opaque (black background, alpha 255). The HUD is green symbology on a
-// transparent background (alpha 0) with premultiplied alpha (the colour channels already
-// multiplied by alpha, as the blend leaves them), ready for composite_over() onto the visual
-// channel whose ChannelConfig it was drawn for.
-//
-// Text: the FontAtlas (FreeType, DejaVu) is built and uploaded once, in the constructor.
-// Render time: measured with the clock the caller lends (set_clock(), as visual::Renderer),
-// from the start of drawing to the image in memory; this library reads no clock itself.
-// The renderer owns its GL context (OSMesa by default; any visual::GlContext, e.g. EGL on a
-// GPU machine) and must be used from one thread. Bad inputs throw std::invalid_argument naming
-// the field; GL failures std::runtime_error.
+// Render time: measured with the clock the caller lends (set_clock()), from the start of drawing
+// to the image in memory; this library reads no clock itself. The renderer owns its GL context
+// (OSMesa by default; any gl::GlContext, e.g. EGL on a GPU machine) and must be used from one
+// thread. Bad inputs throw std::invalid_argument naming the field; GL failures
+// std::runtime_error.
 #pragma once
 
+#include "common/gl/gl_context.hpp"
+#include "common/gl/render_clock.hpp"
+#include "common/picture/image.hpp"
+#include "common/symbology/canvas_renderer.hpp"
 #include "displays/model/display_inputs.hpp"
-#include "displays/model/font_atlas.hpp"
-#include "visual/model/channel_config.hpp"
-#include "visual/model/gl_context.hpp"
-#include "visual/model/image.hpp"
-#include "visual/model/renderer.hpp"
 
-#include <cstddef>
 #include <memory>
 #include <string>
 
 namespace fedsim::displays {
 
-struct DisplayStats {
-  double render_time_ms = 0.0;  // drawing start to the image in memory (0 without a clock) [ms]
-  std::size_t triangles = 0;    // triangles drawn
-};
+using DisplayStats = symbology::DrawStats;
 
 class DisplayRenderer {
  public:
-  static constexpr int kDefaultSamples = 4;
+  static constexpr int kDefaultSamples = symbology::CanvasRenderer::kDefaultSamples;
 
-  /// Renders with a new OSMesa context and the fonts the build found.
-  DisplayRenderer();
-  /// `samples`: multisampling 1, 2 or 4.
-  DisplayRenderer(std::unique_ptr<visual::GlContext> context, const FontPaths& fonts,
-                  int samples = kDefaultSamples);
-  ~DisplayRenderer();
-  DisplayRenderer(const DisplayRenderer&) = delete;
-  DisplayRenderer& operator=(const DisplayRenderer&) = delete;
+  /// A null context: a new OSMesa one; the fonts the build found; `samples`: 1, 2 or 4.
+  explicit DisplayRenderer(std::unique_ptr<gl::GlContext> context = nullptr,
+                           const symbology::FontPaths& fonts = symbology::default_font_paths(),
+                           int samples = kDefaultSamples)
+      : canvas_(std::move(context), fonts, samples) {}
 
   /// Pictures of width x height pixels (16..4096) into `image`, its storage reused.
-  DisplayStats render_pfd(const PfdInputs& in, int width_px, int height_px, visual::Image& image);
-  DisplayStats render_nd(const NdInputs& in, int width_px, int height_px, visual::Image& image);
-  /// The HUD for the visual channel `channel` (its size, field of view and offsets), so that
-  /// its conformal symbols fall on what that channel's camera shows.
-  DisplayStats render_hud(const HudInputs& in, const visual::ChannelConfig& channel,
-                          visual::Image& image);
+  DisplayStats render_pfd(const PfdInputs& in, int width_px, int height_px, picture::Image& image);
+  DisplayStats render_nd(const NdInputs& in, int width_px, int height_px, picture::Image& image);
 
-  void set_clock(visual::FrameClock clock);
-  const FontAtlas& atlas() const;
-  std::string description() const;
+  void set_clock(gl::RenderClock clock) { canvas_.set_clock(std::move(clock)); }
+  const symbology::FontAtlas& atlas() const { return canvas_.atlas(); }
+  std::string description() const { return canvas_.description(); }
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  symbology::CanvasRenderer canvas_;
 };
 
 }  // namespace fedsim::displays

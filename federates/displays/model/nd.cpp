@@ -1,7 +1,7 @@
 #include "displays/model/nd.hpp"
 
+#include "common/symbology/palette.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,13 @@
 
 namespace fedsim::displays {
 
+using namespace symbology;  // the drawing (canvas, glyphs, colours) the displays share
+
 namespace {
 
 using units::kDegToRad;
 using units::kRadToDeg;
-namespace colour = palette;
+namespace colour = symbology::palette;
 
 constexpr double kDesign = 1000.0;
 const Vec2 kCentre{500.0, 560.0};

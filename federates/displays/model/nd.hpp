@@ -12,25 +12,25 @@
 // deviation 70 units per dot.
 #pragma once
 
-#include "displays/model/canvas.hpp"
+#include "common/symbology/canvas.hpp"
 #include "displays/model/display_inputs.hpp"
 
 namespace fedsim::displays {
 
 struct NdLayout {
   double px_per_unit = 1.0;
-  Vec2 origin_px = Vec2::Zero();
-  Vec2 rose_centre_px = Vec2::Zero();  // the aircraft
+  symbology::Vec2 origin_px = symbology::Vec2::Zero();
+  symbology::Vec2 rose_centre_px = symbology::Vec2::Zero();  // the aircraft
   double rose_radius_px = 0.0;         // range_nm from the aircraft
   double deviation_dot_px = 0.0;
-  Rect course_flag_px;  // where the VOR / LOC flag is drawn
+  symbology::Rect course_flag_px;  // where the VOR / LOC flag is drawn
 
-  Vec2 to_px(const Vec2& design) const { return origin_px + px_per_unit * design; }
+  symbology::Vec2 to_px(const symbology::Vec2& design) const { return origin_px + px_per_unit * design; }
 };
 
 NdLayout nd_layout(int width_px, int height_px);
 
 /// Draws the ND into `canvas` (reset to the picture's size first); inputs validated.
-void draw_nd(Canvas& canvas, const NdInputs& in);
+void draw_nd(symbology::Canvas& canvas, const NdInputs& in);
 
 }  // namespace fedsim::displays

@@ -1,7 +1,7 @@
 #include "displays/model/pfd.hpp"
 
+#include "common/symbology/palette.hpp"
 #include "common/units/units.hpp"
-#include "displays/model/palette.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,13 @@
 
 namespace fedsim::displays {
 
+using namespace symbology;  // the drawing (canvas, glyphs, colours) the displays share
+
 namespace {
 
 using units::kDegToRad;
 using units::kRadToDeg;
-namespace colour = palette;
+namespace colour = symbology::palette;
 
 // Design-unit geometry (pfd.hpp): one place, so that the layout and the drawing agree.
 constexpr double kDesign = 1000.0;

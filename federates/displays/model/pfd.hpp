@@ -14,34 +14,34 @@
 // 10 per 1000 to 6000 (the 737's non-linear VSI).
 #pragma once
 
-#include "displays/model/canvas.hpp"
+#include "common/symbology/canvas.hpp"
 #include "displays/model/display_inputs.hpp"
 
 namespace fedsim::displays {
 
 struct PfdLayout {
   double px_per_unit = 1.0;                 // [px per design unit]
-  Vec2 origin_px = Vec2::Zero();            // where the design square's top-left corner falls
-  Vec2 adi_centre_px = Vec2::Zero();        // the aircraft symbol's centre: pitch and roll zero
+  symbology::Vec2 origin_px = symbology::Vec2::Zero();            // where the design square's top-left corner falls
+  symbology::Vec2 adi_centre_px = symbology::Vec2::Zero();        // the aircraft symbol's centre: pitch and roll zero
   double pixels_per_degree = 0.0;           // pitch scale [px/deg]
-  Rect adi_px;                              // the attitude sphere's window
-  Vec2 localizer_centre_px = Vec2::Zero();  // the localizer scale's centre (0 dots)
+  symbology::Rect adi_px;                              // the attitude sphere's window
+  symbology::Vec2 localizer_centre_px = symbology::Vec2::Zero();  // the localizer scale's centre (0 dots)
   double localizer_dot_px = 0.0;            // one dot [px]
-  Rect localizer_scale_px;                  // where its pointer or flag is drawn
-  Vec2 glideslope_centre_px = Vec2::Zero();
+  symbology::Rect localizer_scale_px;                  // where its pointer or flag is drawn
+  symbology::Vec2 glideslope_centre_px = symbology::Vec2::Zero();
   double glideslope_dot_px = 0.0;
-  Rect glideslope_scale_px;
-  Rect speed_readout_px;     // the speed readout box
-  Rect altitude_readout_px;  // the altitude readout box
-  Rect flight_director_flag_px;
+  symbology::Rect glideslope_scale_px;
+  symbology::Rect speed_readout_px;     // the speed readout box
+  symbology::Rect altitude_readout_px;  // the altitude readout box
+  symbology::Rect flight_director_flag_px;
 
-  Vec2 to_px(const Vec2& design) const { return origin_px + px_per_unit * design; }
-  Rect to_px(const Rect& design) const;
+  symbology::Vec2 to_px(const symbology::Vec2& design) const { return origin_px + px_per_unit * design; }
+  symbology::Rect to_px(const symbology::Rect& design) const;
 };
 
 PfdLayout pfd_layout(int width_px, int height_px);
 
 /// Draws the PFD into `canvas` (reset to the picture's size first); inputs validated.
-void draw_pfd(Canvas& canvas, const PfdInputs& in);
+void draw_pfd(symbology::Canvas& canvas, const PfdInputs& in);
 
 }  // namespace fedsim::displays

@@ -15,6 +15,9 @@
 namespace fedsim::displays {
 namespace {
 
+using symbology::FlightDirector;
+using symbology_mapping::DisplayContext;
+using symbology_mapping::flight_director;
 using units::kDegToRad;
 
 msg::NavReceiver localizer(double course_deviation, double gs_deviation, msg::SignalStatus gs = msg::SIGNAL_VALID) {

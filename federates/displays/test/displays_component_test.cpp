@@ -7,10 +7,10 @@
 #include "displays/displays_component.hpp"
 #include "displays/model/pfd.hpp"
 
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/composition.hpp"
 #include "common/units/units.hpp"
 #include "common/util/test/case_dir.hpp"
-#include "visual/model/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +22,7 @@
 namespace fedsim::displays {
 namespace {
 
+using symbology::Rect;
 using units::kDegToRad;
 
 class StateWriter final : public runtime::Component {
@@ -131,14 +132,14 @@ class DisplaysComponentTest : public ::testing::Test {
     return nullptr;
   }
   // Column of the magenta localizer diamond's centroid in the PFD's localizer scale (NaN: none).
-  static double magenta_column(const visual::Image& im) {
+  static double magenta_column(const picture::Image& im) {
     const PfdLayout layout = pfd_layout(im.width_px, im.height_px);
     const Rect r = layout.localizer_scale_px;
     double sum = 0;
     int n = 0;
     for (int row = std::max(0, int(r.y0)); row < std::min(im.height_px, int(r.y1) + 1); ++row) {
       for (int c = std::max(0, int(r.x0)); c < std::min(im.width_px, int(r.x1) + 1); ++c) {
-        const visual::Rgba8 p = im.at(c, row);
+        const picture::Rgba8 p = im.at(c, row);
         if (p.r > 170 && p.b > 170 && p.g < 150) {
           sum += c + 0.5;
           ++n;
@@ -147,7 +148,7 @@ class DisplaysComponentTest : public ::testing::Test {
     }
     return n > 0 ? sum / n : std::nan("");
   }
-  static double dot_px(const visual::Image& im) { return pfd_layout(im.width_px, im.height_px).localizer_dot_px; }
+  static double dot_px(const picture::Image& im) { return pfd_layout(im.width_px, im.height_px).localizer_dot_px; }
 
   std::filesystem::path dir_;
   StateWriter writer_;
@@ -168,7 +169,7 @@ TEST_F(DisplaysComponentTest, DrawsBothDisplaysAtItsRateAndPublishesThem) {
   EXPECT_GE(observer_.picture_count["pfd"], 2);
   EXPECT_GE(observer_.picture_count["nd"], 2);
   const auto& jpeg = observer_.pictures["pfd"].data();
-  const visual::Image pfd = visual::decode_jpeg(jpeg.data(), jpeg.size());
+  const picture::Image pfd = picture::decode_jpeg(jpeg.data(), jpeg.size());
   EXPECT_EQ(pfd.width_px, 200);
   EXPECT_EQ(std::string(observer_.pictures["nd"].encoding()), "image/jpeg");
   EXPECT_EQ(displays_.fault_count(), 0u);
@@ -197,7 +198,7 @@ TEST_F(DisplaysComponentTest, SnapshotsTheTargetedDisplayAndTheLastPicturesOnSto
   composition_.run(2);
   ASSERT_NE(fault("command_rejected"), nullptr);
   composition_.stop();
-  const visual::Image pfd = visual::read_png((dir_ / "pfd.png").string());
+  const picture::Image pfd = picture::read_png((dir_ / "pfd.png").string());
   EXPECT_EQ(pfd.width_px, 200);
   EXPECT_TRUE(std::filesystem::exists(dir_ / "nd.png"));
 }

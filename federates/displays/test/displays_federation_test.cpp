@@ -3,13 +3,13 @@
 // fedsim/visual_picture decode as JPEGs of the displays' size, their status reports the frames
 // drawn, and the last pictures are written as PNGs on stop. The control: a picture of another
 // channel id than the two displays' never arrives (only displays are in this federation).
+#include "common/picture/image.hpp"
+#include "common/picture/jpeg_encoder.hpp"
 #include "common/runtime/federate_options.hpp"
-#include "common/util/build_paths.hpp"
 #include "common/runtime/subscription.hpp"
 #include "common/runtime/topic_catalogue.hpp"
+#include "common/util/build_paths.hpp"
 #include "common/util/child_process.hpp"
-#include "visual/model/image.hpp"
-#include "visual/model/jpeg_encoder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +70,7 @@ TEST(DisplaysFederation, PublishesDecodablePicturesAndWritesTheFinalPngs) {
   EXPECT_EQ(displays->exit_code(), 0) << displays->output();
 
   for (const char* name : {"pfd", "nd"}) {
-    const visual::Image last = visual::read_png(dir + "/" + name + ".png");
+    const picture::Image last = picture::read_png(dir + "/" + name + ".png");
     EXPECT_EQ(last.width_px, 300) << name;
     EXPECT_EQ(last.height_px, 300) << name;
   }
@@ -80,7 +80,7 @@ TEST(DisplaysFederation, PublishesDecodablePicturesAndWritesTheFinalPngs) {
   EXPECT_EQ(seen.name[100], "pfd");
   EXPECT_EQ(seen.name[101], "nd");
   EXPECT_EQ(seen.jpeg.size(), 2u);  // nobody else publishes pictures here
-  const visual::Image pfd = visual::decode_jpeg(seen.jpeg[100].data(), seen.jpeg[100].size());
+  const picture::Image pfd = picture::decode_jpeg(seen.jpeg[100].data(), seen.jpeg[100].size());
   EXPECT_EQ(pfd.width_px, 300);
   EXPECT_EQ(pfd.height_px, 300);
   // 150 frames at 50 Hz, 10 pictures a second: 30 each (the last statuses may still be in flight).

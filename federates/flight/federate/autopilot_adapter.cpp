@@ -1,7 +1,7 @@
 #include "flight/federate/autopilot_adapter.hpp"
 
+#include "common/radio/vor_receiver.hpp"
 #include "common/units/units.hpp"
-#include "nav/model/radio/vor_receiver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -159,7 +159,7 @@ afcs::AfcsVorSignals vor_signals_from_receiver(const msg::NavReceiver& nav) {
   v.cone_of_confusion = nav.status() == msg::SIGNAL_CONE_OF_CONFUSION;
   if (v.valid) {
     v.deviation = nav.course_deviation();
-    v.full_scale_rad = nav::VorReceiverSettings{}.full_scale_rad;
+    v.full_scale_rad = radio::VorReceiverSettings{}.full_scale_rad;
     v.course_true_rad = nav.course_true_rad();
     v.to_from = to_from(nav.to_from());
   }

@@ -64,7 +64,7 @@ class McpPressTracker {
 /// The AFCS's NAV port from a NAV receiver of the navigation state: the localizer only when the
 /// receiver holds a valid localizer signal, the glide slope only when its status is valid; with
 /// a VOR received (signal VOR, valid or flagged) the vor part: tuned, valid, the cone-of-confusion
-/// flag, and when valid the deviation, course, TO/FROM (full scale: nav_radio's 10 deg, which
+/// flag, and when valid the deviation, course, TO/FROM (full scale: common/radio's 10 deg, which
 /// navigation.idl does not carry), the DME's slant range when its status is valid. A flagged
 /// signal's numbers are never passed on.
 afcs::AfcsIlsSignals ils_signals_from_receiver(const msg::NavReceiver& nav);

@@ -1,4 +1,5 @@
 #include "flight/federate/flight_program.hpp"
+#include "common/aircraft_pack/pack_path.hpp"
 #include "common/util/cli_checks.hpp"
 
 #include "flight/model/aircraft/aircraft_pack.hpp"
@@ -69,7 +70,7 @@ AircraftModel::Options model_options(const FlightOptions& o) {
 
 FlightSetup prepare_flight(const FlightOptions& o) {
   FlightSetup setup;
-  setup.model = std::make_unique<AircraftModel>(load_aircraft_pack(resolve_pack_path(o.aircraft)),
+  setup.model = std::make_unique<AircraftModel>(load_aircraft_pack(aircraft_pack::resolve_pack_path(o.aircraft)),
                                                 model_options(o));
   setup.start = establish_start(o.start, *setup.model);
   if (!o.turbulence.empty()) {

@@ -1,29 +1,12 @@
 #include "flight/federate/start_options.hpp"
-#include "common/util/build_paths.hpp"
-#include "common/util/cli_checks.hpp"
 #include "common/units/units.hpp"
+#include "common/util/cli_checks.hpp"
 
 #include "common/airports/runway_table.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
-
 namespace fedsim::flight {
-
-namespace {
-}  // namespace
-
-std::string resolve_pack_path(const std::string& aircraft) {
-  namespace fs = std::filesystem;
-  if (fs::is_regular_file(aircraft)) return aircraft;
-  const fs::path folder = fs::path(fedsim::util::data_dir()) / "aircraft";
-  for (const fs::path& candidate : {folder / aircraft, folder / (aircraft + ".yaml")}) {
-    if (fs::is_regular_file(candidate)) return candidate.string();
-  }
-  throw std::invalid_argument("unknown aircraft pack '" + aircraft + "': no such file, and no " +
-                              aircraft + "(.yaml) in " + folder.string());
-}
 
 void add_start_options(CLI::App& app, StartOptions& o) {
   auto* ic = app.add_option("--ic", o.ic_file, "initial-condition file (YAML)");

@@ -49,10 +49,6 @@ struct StartState {
 /// trim->converged false (the caller decides).
 StartState establish_start(const StartOptions& options, AircraftModel& model);
 
-/// A pack path as given, or a bare name ("c172", "c172.yaml") looked up in the data folder.
-/// Throws std::invalid_argument naming both places when neither exists.
-std::string resolve_pack_path(const std::string& aircraft);
-
 /// The trim solution as one JSON object (alpha, pitch, surfaces, throttle, residuals...).
 std::string trim_json(const TrimResult& trim);
 

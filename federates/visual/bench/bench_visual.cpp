@@ -10,9 +10,9 @@
 // the frame rate the median allows. --png writes the last frame of the last size. The last line is
 // one JSON object with every figure. Runs on OSMesa (llvmpipe, the CPU): LP_NUM_THREADS sets its
 // rasteriser threads (default: the cores).
-#include "visual/model/egl_context.hpp"
-#include "visual/model/timing_summary.hpp"
+#include "common/gl/egl_context.hpp"
 #include "common/units/units.hpp"
+#include "common/util/timing_summary.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/renderer.hpp"
 #include "visual/model/test/ksfo_runways.hpp"
@@ -36,9 +36,9 @@ using fedsim::units::kDegToRad;
 using namespace fedsim::visual;
 using Clock = std::chrono::steady_clock;
 
-// One summary for both benchmarks (visual/model/timing_summary.hpp).
-using Stats = fedsim::visual::TimingSummary;
-Stats stats_of(std::vector<double> ms) { return fedsim::visual::summarize_ms(std::move(ms)); }
+// One summary for both benchmarks (common/util/timing_summary.hpp).
+using Stats = fedsim::util::TimingSummary;
+Stats stats_of(std::vector<double> ms) { return fedsim::util::summarize_ms(std::move(ms)); }
 
 nlohmann::json to_json(const Stats& s) {
   return {{"median_ms", s.median_ms},
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
         std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
     const std::size_t triangles = scene.triangles.size() / 3, lights = scene.lights.size();
     std::string fallback;
-    Renderer renderer(std::move(scene), make_gl_context(*parse_gl_backend(gl), &fallback));
+    Renderer renderer(std::move(scene), fedsim::gl::make_gl_context(*fedsim::gl::parse_gl_backend(gl), &fallback));
     if (!fallback.empty()) std::printf("--gl auto: %s\n", fallback.c_str());
     renderer.set_clock([] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
@@ -129,11 +129,11 @@ int main(int argc, char** argv) {
         triangles, lights, build_ms, frames, samples);
 
     nlohmann::json results = nlohmann::json::array();
-    Image image;
+    fedsim::picture::Image image;
     for (const std::string& size : sizes) {
       int w = 0, h = 0;
       if (!parse_size(size, w, h)) throw std::invalid_argument("--size '" + size + "': not WxH");
-      ChannelConfig channel;
+      fedsim::view::ChannelConfig channel;
       channel.width_px = w;
       channel.height_px = h;
       channel.samples = samples;
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
                          {"frames_per_s_at_median", 1000.0 / wall.median_ms}});
     }
     if (!png.empty()) {
-      write_png(image, png);
+      fedsim::picture::write_png(image, png);
       std::printf("wrote %s\n", png.c_str());
     }
     const nlohmann::json figures = {{"bench", "visual"},

@@ -1,7 +1,7 @@
 #include "visual/model/airport_scene.hpp"
 
 #include "common/units/units.hpp"
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 #include "visual/model/runway_designator.hpp"
 #include "visual/model/runway_frame.hpp"
 
@@ -27,9 +27,9 @@ std::string where_of(const RunwayEndRecord& r) {
 }
 
 void check_point(const nav::GeoPoint& p, const std::string& where, const std::string& name) {
-  require_in_range(p.lat_rad, -units::kHalfPi, units::kHalfPi, where, name + ".lat_rad", "rad");
-  require_in_range(p.lon_rad, -units::kPi, units::kPi, where, name + ".lon_rad", "rad");
-  require_in_range(p.elevation_m, -500.0, 9000.0, where, name + ".elevation_m", "m");
+  util::require_in_range(p.lat_rad, -units::kHalfPi, units::kHalfPi, where, name + ".lat_rad", "rad");
+  util::require_in_range(p.lon_rad, -units::kPi, units::kPi, where, name + ".lon_rad", "rad");
+  util::require_in_range(p.elevation_m, -500.0, 9000.0, where, name + ".elevation_m", "m");
 }
 
 struct Runway {
@@ -290,11 +290,11 @@ void validate(const RunwayEndRecord& r) {
   const std::string where = where_of(r);
   check_point(r.threshold, where, "threshold");
   check_point(r.end, where, "end");
-  require_in_range(r.heading_true_rad, -units::kTwoPi, units::kTwoPi, where, "heading_true_rad",
+  util::require_in_range(r.heading_true_rad, -units::kTwoPi, units::kTwoPi, where, "heading_true_rad",
                    "rad");
-  require_in_range(r.length_m, 100.0, 10000.0, where, "length_m", "m");
-  require_in_range(r.width_m, 0.0, 200.0, where, "width_m", "m");
-  require_in_range(r.displaced_threshold_m, 0.0, r.length_m - 100.0, where, "displaced_threshold_m",
+  util::require_in_range(r.length_m, 100.0, 10000.0, where, "length_m", "m");
+  util::require_in_range(r.width_m, 0.0, 200.0, where, "width_m", "m");
+  util::require_in_range(r.displaced_threshold_m, 0.0, r.length_m - 100.0, where, "displaced_threshold_m",
                    "m");
   parse_designator(r.runway, where);
 }
@@ -312,13 +312,13 @@ Scene build_airport_scene(const std::vector<RunwayEndRecord>& ends,
     }
   }
   if (open.empty()) throw std::invalid_argument("build_airport_scene: no open runway ends given");
-  require_in_range(options.unknown_width_m, 5.0, 200.0, "AirportSceneOptions", "unknown_width_m",
+  util::require_in_range(options.unknown_width_m, 5.0, 200.0, "AirportSceneOptions", "unknown_width_m",
                    "m");
   for (const auto& [name, o] : options.ends) {
-    require_in_range(o.glide_path_rad, 1.0 * units::kDegToRad, 8.0 * units::kDegToRad,
+    util::require_in_range(o.glide_path_rad, 1.0 * units::kDegToRad, 8.0 * units::kDegToRad,
                      "AirportSceneOptions end " + name, "glide_path_rad", "rad");
   }
-  require_in_range(options.default_end.glide_path_rad, 1.0 * units::kDegToRad,
+  util::require_in_range(options.default_end.glide_path_rad, 1.0 * units::kDegToRad,
                    8.0 * units::kDegToRad, "AirportSceneOptions default_end", "glide_path_rad",
                    "rad");
 

@@ -20,7 +20,7 @@ Eigen::Matrix3d gl_from_channel() {
 int PixelPoint::column() const { return static_cast<int>(std::floor(x_px)); }
 int PixelPoint::row() const { return static_cast<int>(std::floor(y_px)); }
 
-ChannelCamera::ChannelCamera(const SceneFrame& frame, const ChannelConfig& config,
+ChannelCamera::ChannelCamera(const SceneFrame& frame, const view::ChannelConfig& config,
                              const EyePose& pose)
     : config_(config) {
   validate(config, "ChannelCamera");

@@ -16,7 +16,7 @@
 // are depth-tested correctly.
 #pragma once
 
-#include "visual/model/channel_config.hpp"
+#include "common/view/channel_config.hpp"
 #include "visual/model/eye_pose.hpp"
 #include "visual/model/scene_frame.hpp"
 
@@ -38,9 +38,9 @@ struct PixelPoint {
 class ChannelCamera {
  public:
   /// Validates the config and the pose (std::invalid_argument naming the field).
-  ChannelCamera(const SceneFrame& frame, const ChannelConfig& config, const EyePose& pose);
+  ChannelCamera(const SceneFrame& frame, const view::ChannelConfig& config, const EyePose& pose);
 
-  const ChannelConfig& config() const { return config_; }
+  const view::ChannelConfig& config() const { return config_; }
   /// The channel's eye point in S [m].
   const Eigen::Vector3d& eye_scene_m() const { return eye_scene_m_; }
   /// Rotation taking channel components (x boresight, y right, z down) to scene components.
@@ -64,7 +64,7 @@ class ChannelCamera {
   double tan_half_vertical() const { return tan_half_v_; }
 
  private:
-  ChannelConfig config_;
+  view::ChannelConfig config_;
   Eigen::Vector3d eye_scene_m_;
   Eigen::Matrix3d scene_from_channel_;
   double tan_half_h_;

@@ -11,11 +11,11 @@ namespace {
 using units::kDegToRad;
 using units::kRadToDeg;
 
-ChannelConfig read_channel(const util::ConfigNode& node) {
+view::ChannelConfig read_channel(const util::ConfigNode& node) {
   node.reject_unknown_keys({"name", "eye_offset_m", "heading_offset_deg", "pitch_offset_deg", "roll_offset_deg",
                             "horizontal_fov_deg", "vertical_fov_deg", "width_px", "height_px", "near_m",
                             "samples"});
-  ChannelConfig c;
+  view::ChannelConfig c;
   c.name = node.string("name");
   if (c.name.empty() || c.name.size() > 31 || c.name.find_first_not_of(
       "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
@@ -46,12 +46,12 @@ ChannelConfig read_channel(const util::ConfigNode& node) {
   return c;
 }
 
-std::vector<ChannelConfig> read_channels(const util::ConfigNode& root) {
+std::vector<view::ChannelConfig> read_channels(const util::ConfigNode& root) {
   root.reject_unknown_keys({"channels"});
-  std::vector<ChannelConfig> channels;
+  std::vector<view::ChannelConfig> channels;
   std::set<std::string> names;
   for (const util::ConfigNode& item : root.child("channels").items()) {
-    ChannelConfig c = read_channel(item);
+    view::ChannelConfig c = read_channel(item);
     if (!names.insert(c.name).second) item.fail_at("name", "'" + c.name + "' is named twice");
     channels.push_back(std::move(c));
   }
@@ -61,15 +61,15 @@ std::vector<ChannelConfig> read_channels(const util::ConfigNode& root) {
 
 }  // namespace
 
-std::vector<ChannelConfig> load_channels(const std::string& path) {
+std::vector<view::ChannelConfig> load_channels(const std::string& path) {
   return read_channels(util::ConfigNode::load_file(path));
 }
 
-std::vector<ChannelConfig> parse_channels(const std::string& text, const std::string& origin) {
+std::vector<view::ChannelConfig> parse_channels(const std::string& text, const std::string& origin) {
   return read_channels(util::ConfigNode::parse(text, origin));
 }
 
-std::size_t channel_index(const std::vector<ChannelConfig>& channels, const std::string& name,
+std::size_t channel_index(const std::vector<view::ChannelConfig>& channels, const std::string& name,
                           const std::string& origin) {
   std::string names;
   for (std::size_t i = 0; i < channels.size(); ++i) {
@@ -79,8 +79,8 @@ std::size_t channel_index(const std::vector<ChannelConfig>& channels, const std:
   throw util::ConfigError(origin + ": no channel '" + name + "' (the file has: " + names + ")");
 }
 
-ChannelConfig load_channel(const std::string& path, const std::string& name) {
-  const std::vector<ChannelConfig> channels = load_channels(path);
+view::ChannelConfig load_channel(const std::string& path, const std::string& name) {
+  const std::vector<view::ChannelConfig> channels = load_channels(path);
   return channels[channel_index(channels, name, path)];
 }
 

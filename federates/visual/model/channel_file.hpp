@@ -7,7 +7,7 @@
 #pragma once
 
 #include "common/util/config_node.hpp"
-#include "visual/model/channel_config.hpp"
+#include "common/view/channel_config.hpp"
 
 #include <string>
 #include <vector>
@@ -15,14 +15,14 @@
 namespace fedsim::visual {
 
 /// Reads every channel of the file (throws util::ConfigError).
-std::vector<ChannelConfig> load_channels(const std::string& path);
+std::vector<view::ChannelConfig> load_channels(const std::string& path);
 /// The same from YAML text; `origin` names it in errors.
-std::vector<ChannelConfig> parse_channels(const std::string& text, const std::string& origin);
+std::vector<view::ChannelConfig> parse_channels(const std::string& text, const std::string& origin);
 /// Where the channel called `name` is in `channels` (read from `origin`); util::ConfigError
 /// "<origin>: no channel '<name>' (the file has: a, b)" when absent.
-std::size_t channel_index(const std::vector<ChannelConfig>& channels, const std::string& name,
+std::size_t channel_index(const std::vector<view::ChannelConfig>& channels, const std::string& name,
                           const std::string& origin);
 /// The channel called `name` of the file; util::ConfigError listing the names when absent.
-ChannelConfig load_channel(const std::string& path, const std::string& name);
+view::ChannelConfig load_channel(const std::string& path, const std::string& name);
 
 }  // namespace fedsim::visual

@@ -6,7 +6,7 @@
 
 namespace fedsim::visual {
 
-Image side_by_side(const std::vector<Image>& images, int gap_px, Rgba8 gap) {
+picture::Image side_by_side(const std::vector<picture::Image>& images, int gap_px, picture::Rgba8 gap) {
   if (images.empty()) throw std::invalid_argument("montage: no images");
   if (gap_px < 0) throw std::invalid_argument("montage: gap " + std::to_string(gap_px) + " px is negative");
   const int height = images.front().height_px;
@@ -19,12 +19,12 @@ Image side_by_side(const std::vector<Image>& images, int gap_px, Rgba8 gap) {
     }
     width += images[i].width_px;
   }
-  Image out(width, height);
+  picture::Image out(width, height);
   for (int row = 0; row < height; ++row) {
     for (int column = 0; column < width; ++column) out.set(column, row, gap);
   }
   int left = 0;
-  for (const Image& image : images) {
+  for (const picture::Image& image : images) {
     const std::size_t row_bytes = static_cast<std::size_t>(image.width_px) * 4;
     for (int row = 0; row < height; ++row) {
       const auto* from = image.rgba.data() + static_cast<std::size_t>(row) * row_bytes;

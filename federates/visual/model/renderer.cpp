@@ -1,9 +1,9 @@
 #include "visual/model/renderer.hpp"
 
-#include "visual/model/gl_program.hpp"
-#include "visual/model/osmesa_context.hpp"
+#include "common/gl/gl_program.hpp"
+#include "common/gl/osmesa_context.hpp"
+#include "common/gl/render_target.hpp"
 #include "visual/model/procedural_texture.hpp"
-#include "visual/model/render_target.hpp"
 #include "visual/model/shaders.hpp"
 #include "visual/model/sky_model.hpp"
 
@@ -72,7 +72,7 @@ Atmosphere atmosphere_of(const Environment& e) {
   return a;
 }
 
-void set_atmosphere(const GlProgram& p, const Atmosphere& a, const ChannelCamera& camera,
+void set_atmosphere(const gl::GlProgram& p, const Atmosphere& a, const ChannelCamera& camera,
                     const Scene& scene) {
   p.set("u_eye", camera.eye_scene_m().cast<float>().eval());
   p.set("u_eye_height", static_cast<float>(camera.eye_height_above_ground_m()));
@@ -86,7 +86,7 @@ void set_atmosphere(const GlProgram& p, const Atmosphere& a, const ChannelCamera
   p.set("u_cloud_colour", a.cloud_colour);
 }
 
-GLuint upload_texture(const GlApi& gl, const TextureImage& t) {
+GLuint upload_texture(const gl::GlApi& gl, const TextureImage& t) {
   GLuint id = 0;
   gl.GenTextures(1, &id);
   gl.BindTexture(GL_TEXTURE_2D, id);
@@ -100,7 +100,7 @@ GLuint upload_texture(const GlApi& gl, const TextureImage& t) {
   return id;
 }
 
-void attribute(const GlApi& gl, GLuint index, int size, std::size_t stride_floats,
+void attribute(const gl::GlApi& gl, GLuint index, int size, std::size_t stride_floats,
                std::size_t offset_floats) {
   gl.EnableVertexAttribArray(index);
   gl.VertexAttribPointer(index, size, GL_FLOAT, GL_FALSE,
@@ -154,11 +154,11 @@ void check_scene(const Scene& scene) {
 }  // namespace
 
 struct Renderer::Impl {
-  Impl(Scene s, std::unique_ptr<GlContext> c)
+  Impl(Scene s, std::unique_ptr<gl::GlContext> c)
       : scene(std::move(s)),
         context(std::move(c)),
         gl((context->make_current(),
-            GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
+            gl::GlProcLoader([this](const char* n) { return context->proc_address(n); }))),
         environment(gl, "environment", shaders::kEnvironmentVertex, shaders::kEnvironmentFragment),
         surfaces(gl, "surfaces", shaders::kSurfaceVertex, shaders::kSurfaceFragment),
         lights(gl, "lights", shaders::kLightVertex, shaders::kLightFragment) {
@@ -219,7 +219,7 @@ struct Renderer::Impl {
     attribute(gl, 5, 1, kLightFloats, 16);
   }
 
-  RenderTarget& target_for(const ChannelConfig& c) {
+  gl::RenderTarget& target_for(const view::ChannelConfig& c) {
     if (!target || !target->matches(c.width_px, c.height_px, c.samples)) {
       target.reset();
       target.emplace(gl, c.width_px, c.height_px, c.samples);
@@ -228,7 +228,7 @@ struct Renderer::Impl {
   }
 
   void draw_environment(const ChannelCamera& camera, const Atmosphere& a) {
-    const ChannelConfig& c = camera.config();
+    const view::ChannelConfig& c = camera.config();
     gl.Disable(GL_DEPTH_TEST);
     gl.DepthMask(GL_FALSE);
     environment.use();
@@ -298,13 +298,13 @@ struct Renderer::Impl {
     gl.Disable(GL_BLEND);
   }
 
-  RenderStats render(const ChannelConfig& channel, const EyePose& eye, const Environment& env,
-                     Image& image) {
+  RenderStats render(const view::ChannelConfig& channel, const EyePose& eye, const Environment& env,
+                     picture::Image& image) {
     validate(env, "Renderer environment");
     const ChannelCamera camera(scene.frame, channel, eye);
     const Atmosphere a = atmosphere_of(env);
     context->make_current();
-    RenderTarget& t = target_for(channel);
+    gl::RenderTarget& t = target_for(channel);
     const std::int64_t start_ns = clock ? clock() : 0;
     t.bind_for_drawing();
     gl.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -327,11 +327,11 @@ struct Renderer::Impl {
   }
 
   Scene scene;
-  std::unique_ptr<GlContext> context;
-  GlApi gl;
-  GlProgram environment;
-  GlProgram surfaces;
-  GlProgram lights;
+  std::unique_ptr<gl::GlContext> context;
+  gl::GlApi gl;
+  gl::GlProgram environment;
+  gl::GlProgram surfaces;
+  gl::GlProgram lights;
   GLuint ground_texture_id = 0;
   GLuint pavement_texture_id = 0;
   GLuint empty_vao = 0;
@@ -339,34 +339,34 @@ struct Renderer::Impl {
   GLuint surface_vbo = 0;
   GLuint light_vao = 0;
   GLuint light_vbo = 0;
-  FrameClock clock;
-  std::optional<RenderTarget> target;
+  gl::RenderClock clock;
+  std::optional<gl::RenderTarget> target;
 };
 
-Renderer::Renderer(Scene scene) : Renderer(std::move(scene), std::make_unique<OsMesaContext>()) {}
+Renderer::Renderer(Scene scene) : Renderer(std::move(scene), std::make_unique<gl::OsMesaContext>()) {}
 
-Renderer::Renderer(Scene scene, std::unique_ptr<GlContext> context) {
+Renderer::Renderer(Scene scene, std::unique_ptr<gl::GlContext> context) {
   if (!context) throw std::invalid_argument("Renderer: no GL context given");
   impl_ = std::make_unique<Impl>(std::move(scene), std::move(context));
 }
 
 Renderer::~Renderer() = default;
 
-RenderStats Renderer::render(const ChannelConfig& channel, const EyePose& eye,
-                             const Environment& environment, Image& image) {
+RenderStats Renderer::render(const view::ChannelConfig& channel, const EyePose& eye,
+                             const Environment& environment, picture::Image& image) {
   return impl_->render(channel, eye, environment, image);
 }
 
-RenderedFrame Renderer::render(const ChannelConfig& channel, const EyePose& eye,
+RenderedFrame Renderer::render(const view::ChannelConfig& channel, const EyePose& eye,
                                const Environment& environment) {
   RenderedFrame f;
   f.stats = impl_->render(channel, eye, environment, f.image);
   return f;
 }
 
-void Renderer::set_clock(FrameClock clock) { impl_->clock = std::move(clock); }
+void Renderer::set_clock(gl::RenderClock clock) { impl_->clock = std::move(clock); }
 
-ChannelCamera Renderer::camera(const ChannelConfig& channel, const EyePose& eye) const {
+ChannelCamera Renderer::camera(const view::ChannelConfig& channel, const EyePose& eye) const {
   return ChannelCamera(impl_->scene.frame, channel, eye);
 }
 

@@ -21,12 +21,13 @@
 // GL failures throw std::runtime_error.
 #pragma once
 
+#include "common/gl/gl_context.hpp"
+#include "common/gl/render_clock.hpp"
+#include "common/picture/image.hpp"
+#include "common/view/channel_config.hpp"
 #include "visual/model/channel_camera.hpp"
-#include "visual/model/channel_config.hpp"
 #include "visual/model/environment.hpp"
 #include "visual/model/eye_pose.hpp"
-#include "visual/model/gl_context.hpp"
-#include "visual/model/image.hpp"
 #include "visual/model/scene.hpp"
 
 #include <cstdint>
@@ -35,9 +36,6 @@
 #include <string>
 
 namespace fedsim::visual {
-
-/// A monotonic clock [ns] (e.g. std::chrono::steady_clock's count).
-using FrameClock = std::function<std::int64_t()>;
 
 struct RenderStats {
   double render_time_ms = 0.0;       // clear to the image in memory (0 without a clock) [ms]
@@ -48,7 +46,7 @@ struct RenderStats {
 };
 
 struct RenderedFrame {
-  Image image;
+  picture::Image image;
   RenderStats stats;
 };
 
@@ -56,21 +54,21 @@ class Renderer {
  public:
   /// Renders with a new OSMesa context (software, no GPU).
   explicit Renderer(Scene scene);
-  Renderer(Scene scene, std::unique_ptr<GlContext> context);
+  Renderer(Scene scene, std::unique_ptr<gl::GlContext> context);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
   /// Draws into `image` (resized to the channel), reusing its storage frame to frame.
-  RenderStats render(const ChannelConfig& channel, const EyePose& eye,
-                     const Environment& environment, Image& image);
-  RenderedFrame render(const ChannelConfig& channel, const EyePose& eye,
+  RenderStats render(const view::ChannelConfig& channel, const EyePose& eye,
+                     const Environment& environment, picture::Image& image);
+  RenderedFrame render(const view::ChannelConfig& channel, const EyePose& eye,
                        const Environment& environment);
 
   /// The clock render() times frames with (none: the times stay 0).
-  void set_clock(FrameClock clock);
+  void set_clock(gl::RenderClock clock);
 
-  ChannelCamera camera(const ChannelConfig& channel, const EyePose& eye) const;
+  ChannelCamera camera(const view::ChannelConfig& channel, const EyePose& eye) const;
   const Scene& scene() const;
   std::string description() const;
 

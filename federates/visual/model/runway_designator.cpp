@@ -1,6 +1,6 @@
 #include "visual/model/runway_designator.hpp"
 
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <cctype>
 
@@ -29,12 +29,12 @@ RunwayDesignator parse_designator(const std::string& text, const std::string& wh
       text.size() == digits || (text.size() == digits + 1 &&
                                 (text.back() == 'L' || text.back() == 'C' || text.back() == 'R'));
   if (digits == 0 || digits > 2 || !letter_ok) {
-    reject(where, "runway", "'" + text + "' is not a runway designator (01-36 and L/C/R)");
+    util::reject(where, "runway", "'" + text + "' is not a runway designator (01-36 and L/C/R)");
   }
   RunwayDesignator d;
   d.number = std::stoi(text.substr(0, digits));
   if (d.number < 1 || d.number > 36) {
-    reject(where, "runway", "'" + text + "': the number must be 01-36");
+    util::reject(where, "runway", "'" + text + "': the number must be 01-36");
   }
   d.letter = text.size() > digits ? text.back() : 0;
   return d;

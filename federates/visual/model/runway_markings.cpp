@@ -1,6 +1,6 @@
 #include "visual/model/runway_markings.hpp"
 
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -123,9 +123,9 @@ double centreline_width_m(ApproachCategory category) {
 
 EndMarkings end_markings(const EndMarkingInput& in) {
   const std::string where = "runway markings " + in.designator.text();
-  require_in_range(in.width_m, 5.0, 200.0, where, "width_m", "m");
-  require_in_range(in.landing_distance_m, 100.0, 10000.0, where, "landing_distance_m", "m");
-  require_in_range(in.displaced_threshold_m, 0.0, 5000.0, where, "displaced_threshold_m", "m");
+  util::require_in_range(in.width_m, 5.0, 200.0, where, "width_m", "m");
+  util::require_in_range(in.landing_distance_m, 100.0, 10000.0, where, "landing_distance_m", "m");
+  util::require_in_range(in.displaced_threshold_m, 0.0, 5000.0, where, "displaced_threshold_m", "m");
   EndMarkings m;
   m.threshold_stripes = threshold_stripe_count(in.width_m);
   m.threshold_stripe_width_m = add_threshold_stripes(m.quads, in.width_m, m.threshold_stripes);

@@ -1,17 +1,17 @@
 #include "visual/model/scene_frame.hpp"
 
 #include "common/units/units.hpp"
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <cmath>
 
 namespace fedsim::visual {
 
 SceneFrame::SceneFrame(const GeodeticPosition& origin) : origin_(origin) {
-  require_in_range(origin.lat_rad, -units::kHalfPi, units::kHalfPi, "SceneFrame origin", "lat_rad",
+  util::require_in_range(origin.lat_rad, -units::kHalfPi, units::kHalfPi, "SceneFrame origin", "lat_rad",
                    "rad");
-  require_in_range(origin.lon_rad, -units::kPi, units::kPi, "SceneFrame origin", "lon_rad", "rad");
-  require_in_range(origin.alt_m, -1000.0, 10000.0, "SceneFrame origin", "alt_m", "m");
+  util::require_in_range(origin.lon_rad, -units::kPi, units::kPi, "SceneFrame origin", "lon_rad", "rad");
+  util::require_in_range(origin.alt_m, -1000.0, 10000.0, "SceneFrame origin", "alt_m", "m");
   origin_ecef_m_ = Wgs84::ecef_from_geodetic(origin);
   scene_from_ecef_ = Wgs84::ned_from_ecef(origin.lat_rad, origin.lon_rad);
   ground_radius_m_ = std::sqrt(Wgs84::meridian_radius_m(origin.lat_rad) *

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "common/units/units.hpp"
-#include "visual/model/input_checks.hpp"
+#include "common/util/input_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,12 +54,12 @@ double refraction_deg(double e) {
 
 SunDirection sun_direction(const UtcTime& time, double lat_rad, double lon_rad) {
   const std::string where = "sun_direction";
-  require_in_range(time.year, 1800, 2200, where, "year");
-  require_in_range(time.month, 1, 12, where, "month");
-  require_in_range(time.day, 1, 31, where, "day");
-  require_in_range(time.seconds_of_day, 0.0, 86400.0, where, "seconds_of_day", "s");
-  require_in_range(lat_rad, -units::kHalfPi, units::kHalfPi, where, "lat_rad", "rad");
-  require_in_range(lon_rad, -units::kPi, units::kPi, where, "lon_rad", "rad");
+  util::require_in_range(time.year, 1800, 2200, where, "year");
+  util::require_in_range(time.month, 1, 12, where, "month");
+  util::require_in_range(time.day, 1, 31, where, "day");
+  util::require_in_range(time.seconds_of_day, 0.0, 86400.0, where, "seconds_of_day", "s");
+  util::require_in_range(lat_rad, -units::kHalfPi, units::kHalfPi, where, "lat_rad", "rad");
+  util::require_in_range(lon_rad, -units::kPi, units::kPi, where, "lon_rad", "rad");
 
   const double t = (julian_day(time) - 2451545.0) / 36525.0;  // Julian centuries from J2000
   const double mean_longitude = wrap_degrees(280.46646 + t * (36000.76983 + t * 0.0003032));

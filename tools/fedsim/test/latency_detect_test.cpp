@@ -144,15 +144,15 @@ TEST(LatencyOnset, EarliestOverChannelsIsTheFirstToMove) {
 
 // A picture with sky above `horizon_row` (fractional: the edge row is blended, as a
 // multisampled edge is) and ground below.
-visual::Image sky_over_ground(int width, int height, double horizon_row) {
-  visual::Image image(width, height);
-  const visual::Rgba8 sky{60, 120, 220, 255}, ground{140, 90, 30, 255};
+picture::Image sky_over_ground(int width, int height, double horizon_row) {
+  picture::Image image(width, height);
+  const picture::Rgba8 sky{60, 120, 220, 255}, ground{140, 90, 30, 255};
   for (int r = 0; r < height; ++r) {
     const double sky_part = std::clamp(horizon_row - r, 0.0, 1.0);
     auto mix = [&](std::uint8_t s, std::uint8_t g) {
       return static_cast<std::uint8_t>(std::lround(sky_part * s + (1.0 - sky_part) * g));
     };
-    const visual::Rgba8 px{mix(sky.r, ground.r), mix(sky.g, ground.g), mix(sky.b, ground.b), 255};
+    const picture::Rgba8 px{mix(sky.r, ground.r), mix(sky.g, ground.g), mix(sky.b, ground.b), 255};
     for (int c = 0; c < width; ++c) image.set(c, r, px);
   }
   return image;
@@ -171,27 +171,27 @@ TEST(LatencyBlueness, FollowsTheHorizonBySubPixelSteps) {
 }
 
 TEST(LatencyBlueness, AColumnRangeLooksOnlyThere) {
-  visual::Image image = sky_over_ground(300, 100, 50.0);
+  picture::Image image = sky_over_ground(300, 100, 50.0);
   const double middle = blueness(image, 1.0 / 3.0, 2.0 / 3.0);
   for (int r = 0; r < 100; ++r) image.set(10, r, {255, 255, 255, 255});  // a tape at the left edge changes
   EXPECT_EQ(blueness(image, 1.0 / 3.0, 2.0 / 3.0), middle);
   EXPECT_NE(blueness(image), blueness(sky_over_ground(300, 100, 50.0)));
   EXPECT_THROW(blueness(image, 0.5, 0.5), std::invalid_argument);
-  EXPECT_THROW(blueness(visual::Image{}), std::invalid_argument);
+  EXPECT_THROW(blueness(picture::Image{}), std::invalid_argument);
 }
 
 // A horizon through the picture's centre tilted by `slope` rows per column (+: its right end
 // lower), the edge pixel blended by its sky part as in sky_over_ground; the ground textured
 // (stripes of its red and blue, as grass and fields are), which the tilt must not see.
-visual::Image tilted_horizon(int width, int height, double slope, int ground_shift = 0) {
-  visual::Image image(width, height);
-  const visual::Rgba8 sky{60, 120, 220, 255};
+picture::Image tilted_horizon(int width, int height, double slope, int ground_shift = 0) {
+  picture::Image image(width, height);
+  const picture::Rgba8 sky{60, 120, 220, 255};
   for (int c = 0; c < width; ++c) {
     const double horizon_row = 0.5 * height + slope * (c + 0.5 - 0.5 * width);
     for (int r = 0; r < height; ++r) {
       const double sky_part = std::clamp(horizon_row - r, 0.0, 1.0);
       const bool field = ((c + ground_shift) / 7 + r / 5) % 2 == 0;
-      const visual::Rgba8 ground = field ? visual::Rgba8{140, 90, 30, 255} : visual::Rgba8{70, 110, 40, 255};
+      const picture::Rgba8 ground = field ? picture::Rgba8{140, 90, 30, 255} : picture::Rgba8{70, 110, 40, 255};
       auto mix = [&](std::uint8_t sv, std::uint8_t gv) {
         return static_cast<std::uint8_t>(std::lround(sky_part * sv + (1.0 - sky_part) * gv));
       };
@@ -218,10 +218,10 @@ TEST(LatencyTilt, FollowsTheHorizonsTiltAndNotItsHeightOrTheGround) {
   // Negative controls: the ground's texture moved sideways, a level picture the same again.
   EXPECT_EQ(blueness_tilt(tilted_horizon(200, 160, 0.0, 3)), level);
   EXPECT_EQ(blueness_tilt(tilted_horizon(200, 160, 0.0)), level);
-  EXPECT_THROW(blueness_tilt(visual::Image{}), std::invalid_argument);
+  EXPECT_THROW(blueness_tilt(picture::Image{}), std::invalid_argument);
   EXPECT_THROW(blueness_tilt(tilted_horizon(20, 10, 0.0), Region{0.6, 0.4, 0.0, 1.0}), std::invalid_argument);
   // A region: the rows above the sky's part see no horizon, so no tilt; its own columns only.
-  const visual::Image tilted = tilted_horizon(200, 160, 0.001);
+  const picture::Image tilted = tilted_horizon(200, 160, 0.001);
   EXPECT_EQ(blueness_tilt(tilted, Region{0.0, 1.0, 0.0, 0.4}), 0.0);
   EXPECT_LT(blueness_tilt(tilted, Region{0.25, 0.75, 0.4, 0.6}), 0.0);
 }

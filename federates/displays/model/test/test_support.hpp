@@ -1,11 +1,12 @@
 // Shared helpers of the displays' tests: one renderer per test process, colour classes that
 // find the symbols by their meaning's colour (palette.hpp, after 4x multisampling blends their
-// edges), centroids and counts over rectangles, and where test pictures go.
+// edges), and where test pictures go; centroids and counts over rectangles are common/symbology's
+// (test/picture_probes.hpp).
 #pragma once
 
-#include "displays/model/canvas.hpp"
+#include "common/picture/image.hpp"
+#include "common/symbology/test/picture_probes.hpp"
 #include "displays/model/display_renderer.hpp"
-#include "visual/model/image.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -16,8 +17,15 @@
 
 namespace fedsim::displays::test {
 
-using visual::Image;
-using visual::Rgba8;
+using picture::Image;
+using picture::Rgba8;
+using symbology::Rect;
+using symbology::Vec2;
+using symbology::polar;
+using symbology::test::centroid;
+using symbology::test::count;
+using symbology::test::differing_pixels;
+using symbology::test::PixelTest;
 
 inline DisplayRenderer& renderer() {
   static DisplayRenderer r;
@@ -37,38 +45,6 @@ inline bool is_white(const Rgba8& p) { return p.r > 200 && p.g > 200 && p.b > 20
 /// White text's pixels: small glyphs' strokes are thinner than a pixel, so lighter than white.
 inline bool is_light(const Rgba8& p) { return p.r > 110 && p.g > 110 && p.b > 110; }
 
-using PixelTest = std::function<bool(const Rgba8&)>;
-
-inline int count(const Image& image, const Rect& r, const PixelTest& test) {
-  int n = 0;
-  for (int row = std::max(0, static_cast<int>(std::floor(r.y0)));
-       row < std::min(image.height_px, static_cast<int>(std::ceil(r.y1))); ++row) {
-    for (int col = std::max(0, static_cast<int>(std::floor(r.x0)));
-         col < std::min(image.width_px, static_cast<int>(std::ceil(r.x1))); ++col) {
-      if (test(image.at(col, row))) ++n;
-    }
-  }
-  return n;
-}
-
-/// Centre of the pixels passing `test` in `r` (pixel centres at +0.5); nullopt when none.
-inline std::optional<Vec2> centroid(const Image& image, const Rect& r, const PixelTest& test) {
-  Vec2 sum = Vec2::Zero();
-  int n = 0;
-  for (int row = std::max(0, static_cast<int>(std::floor(r.y0)));
-       row < std::min(image.height_px, static_cast<int>(std::ceil(r.y1))); ++row) {
-    for (int col = std::max(0, static_cast<int>(std::floor(r.x0)));
-         col < std::min(image.width_px, static_cast<int>(std::ceil(r.x1))); ++col) {
-      if (test(image.at(col, row))) {
-        sum += Vec2(col + 0.5, row + 0.5);
-        ++n;
-      }
-    }
-  }
-  if (n == 0) return std::nullopt;
-  return sum / n;
-}
-
 /// The sky/ground boundary in `column` between rows y0 and y1: the edge between the last sky
 /// row and the first ground row after it (white lines between them split the difference).
 inline std::optional<double> sky_ground_boundary(const Image& image, int column, int y0, int y1) {
@@ -79,17 +55,6 @@ inline std::optional<double> sky_ground_boundary(const Image& image, int column,
     if (is_ground(p) && last_sky) return 0.5 * (*last_sky + 1 + row);
   }
   return std::nullopt;
-}
-
-inline int differing_pixels(const Image& a, const Image& b, const Rect& r) {
-  int n = 0;
-  for (int row = static_cast<int>(r.y0); row < static_cast<int>(r.y1); ++row) {
-    for (int col = static_cast<int>(r.x0); col < static_cast<int>(r.x1); ++col) {
-      const Rgba8 p = a.at(col, row), q = b.at(col, row);
-      if (p.r != q.r || p.g != q.g || p.b != q.b || p.a != q.a) ++n;
-    }
-  }
-  return n;
 }
 
 /// Where test pictures are written: $FEDSIM_DISPLAYS_TEST_OUTPUT or <tmp>/fedsim_displays_tests.

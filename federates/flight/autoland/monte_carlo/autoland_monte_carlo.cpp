@@ -24,9 +24,9 @@ void require(bool ok, const char* field, double value) {
 /// Fuel shared over the tanks in proportion to their capacities.
 std::vector<double> fuel_by_tank(const AircraftPack& pack, double fuel_kg) {
   double capacity = 0.0;
-  for (const FuelTankSpec& t : pack.mass.fuel_tanks) capacity += t.capacity_kg;
+  for (const aircraft_pack::FuelTankSpec& t : pack.mass.fuel_tanks) capacity += t.capacity_kg;
   std::vector<double> out;
-  for (const FuelTankSpec& t : pack.mass.fuel_tanks) {
+  for (const aircraft_pack::FuelTankSpec& t : pack.mass.fuel_tanks) {
     out.push_back(capacity > 0.0 ? std::min(fuel_kg * t.capacity_kg / capacity, t.capacity_kg) : 0.0);
   }
   return out;

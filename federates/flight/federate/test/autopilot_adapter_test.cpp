@@ -185,7 +185,7 @@ TEST(VorSignals, AValidVorPassesItsReadingAndItsDme) {
   EXPECT_FALSE(s.vor.cone_of_confusion);
   EXPECT_DOUBLE_EQ(s.vor.deviation, -0.4);
   EXPECT_DOUBLE_EQ(s.vor.course_true_rad, 4.49);
-  EXPECT_NEAR(s.vor.full_scale_rad, 10.0 * units::kDegToRad, 1e-12);  // nav_radio's CDI
+  EXPECT_NEAR(s.vor.full_scale_rad, 10.0 * units::kDegToRad, 1e-12);  // common/radio's CDI
   EXPECT_EQ(s.vor.to_from, afcs::VorToFrom::kFrom);
   EXPECT_TRUE(s.vor.dme_valid);
   EXPECT_DOUBLE_EQ(s.vor.dme_slant_range_m, 33000.0);

@@ -6,8 +6,8 @@
 // Also: VOR/LOC on SFO VOR (NAV1 on 115.80 MHz, OBS 240) captures the radial from the
 // navigation federate's VOR readings; the instructor's autopilot failure disengages it with an
 // alert; a bad MCP panel is rejected and counted.
-#include "flight/federate/flight_program.hpp"
 #include "common/util/build_paths.hpp"
+#include "flight/federate/flight_program.hpp"
 #include "flight/model/afcs/ils_approach_source.hpp"
 #include "flight/model/afcs/landing_figures.hpp"
 #include "io/io_component.hpp"
@@ -157,7 +157,7 @@ TEST(FlightAutopilot, FliesTheIlsFromTheNavFederatesReadingsToAStopOnTheCentreli
   // flies): it passes 7.6 m left of the threshold (data/nav/ILS.md "Known offset: KSFO 28R").
   const nav::IlsApproach ils = afcs::load_default_ils_approach("KSFO", "28R");
   const double left_of_course_m =
-      nav::course_coordinates(ils, nav::approach_geometry(ils), t.latitude_rad(), t.longitude_rad()).left_m;
+      radio::course_coordinates(ils, radio::approach_geometry(ils), t.latitude_rad(), t.longitude_rad()).left_m;
   const double sink_mps = t.velocity_ned_mps()[2];
   const double stop_left_m = runway.left_m(r.state.latitude_rad(), r.state.longitude_rad());
   const double stop_beyond_m = runway.beyond_threshold_m(r.state.latitude_rad(), r.state.longitude_rad());

@@ -5,7 +5,7 @@
 //   aircraft  - the flight model's state (AircraftOutputs through model_coupling.hpp, or the
 //               aircraft-state topic in a federation) and the pilot's present control commands
 //               (for bumpless engagement);
-//   ils       - the NAV1 receiver's readings (nav_radio) with their validity: the localizer and
+//   ils       - the NAV1 receiver's readings (common/radio) with their validity: the localizer and
 //               glide slope of an ILS, or (ils.vor) a VOR with its DME; a flagged signal is
 //               never flown;
 //   mcp       - the mode control panel: selections (held values) and buttons (true in the frame
@@ -51,7 +51,7 @@ struct AfcsAircraftState {
   double pitch_trim = 0.0;  // the pitch trim's present position, -1..1 in the elevator's sense
 };
 
-/// The VOR's TO/FROM flag (nav_radio ToFrom, navigation.idl ToFromFlag).
+/// The VOR's TO/FROM flag (common/radio ToFrom, navigation.idl ToFromFlag).
 enum class VorToFrom : std::uint8_t { kOff, kTo, kFrom };
 
 /// NAV1 tuned to a VOR (then the localizer and glide slope of AfcsIlsSignals read flagged).

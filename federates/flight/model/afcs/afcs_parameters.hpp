@@ -85,7 +85,7 @@ struct LateralGains {
 };
 
 /// VOR tracking (VOR/LOC on a VOR). The beam is 10 deg full scale against the localizer's ~2-3
-/// deg, and a real one is noisier (scalloping, site errors; nav_radio's is exact): the law is
+/// deg, and a real one is noisier (scalloping, site errors; common/radio's is exact): the law is
 /// the localizer's on the lateral distance (DME x angle), with a softer time constant and the
 /// deviation low-passed.
 struct VorGains {

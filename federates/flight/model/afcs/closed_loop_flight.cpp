@@ -3,10 +3,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/radio/glide_slope_receiver.hpp"
+#include "common/radio/localizer_receiver.hpp"
 #include "flight/model/afcs/lateral_guidance.hpp"
 #include "flight/model/scenario/reposition.hpp"
-#include "nav/model/radio/glide_slope_receiver.hpp"
-#include "nav/model/radio/localizer_receiver.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 
@@ -15,7 +15,7 @@
 
 namespace fedsim::flight::afcs {
 
-GeodeticPosition approach_point_position(const nav::IlsApproach& approach, const nav::ApproachGeometry& geometry,
+GeodeticPosition approach_point_position(const nav::IlsApproach& approach, const radio::ApproachGeometry& geometry,
                                          const ApproachPoint& point) {
   const nav::GeoPoint& antenna = approach.localizer;
   const GeographicLib::LocalCartesian plane(antenna.lat_rad * units::kRadToDeg, antenna.lon_rad * units::kRadToDeg,
@@ -32,7 +32,7 @@ GeodeticPosition approach_point_position(const nav::IlsApproach& approach, const
 ClosedLoopFlight::ClosedLoopFlight(AircraftPack pack, nav::IlsApproach approach, ClosedLoopOptions options)
     : pack_(std::move(pack)),
       approach_(std::move(approach)),
-      geometry_(nav::approach_geometry(approach_)),
+      geometry_(radio::approach_geometry(approach_)),
       options_(std::move(options)),
       gear_(GearGeometry::of(pack_)),
       model_(std::make_unique<AircraftModel>(pack_, options_.model)),
@@ -50,7 +50,7 @@ TrimResult ClosedLoopFlight::start_level(const ApproachPoint& point, double head
                         configuration);
 }
 
-void ClosedLoopFlight::set_nav1(nav::NavRadio* radio, const nav::NavTuning& tuning) {
+void ClosedLoopFlight::set_nav1(radio::NavRadio* radio, const radio::NavTuning& tuning) {
   nav1_ = radio;
   nav1_tuning_ = tuning;
 }
@@ -85,17 +85,17 @@ void ClosedLoopFlight::run_for(double duration_s) {
 }
 
 ApproachPoint ClosedLoopFlight::approach_point(double lat_rad, double lon_rad, double altitude_m) const {
-  const nav::CourseCoordinates cc = nav::course_coordinates(approach_, geometry_, lat_rad, lon_rad);
+  const radio::CourseCoordinates cc = radio::course_coordinates(approach_, geometry_, lat_rad, lon_rad);
   return {cc.along_m - geometry_.threshold_along_m, cc.left_m, altitude_m};
 }
 
 const FlightSample& ClosedLoopFlight::step() {
   const AircraftOutputs& o = model_->outputs();
-  const nav::AircraftPose pose = nav_pose(o);
-  nav::LocalizerReading loc = nav::LocalizerReceiver().read(approach_, pose);
-  nav::GlideSlopeReading gs = nav::GlideSlopeReceiver().read(approach_, pose);
-  if (localizer_off_air_) loc = nav::LocalizerReading{nav::SignalStatus::kStationOffAir, loc.ident};
-  if (glide_slope_off_air_) gs = nav::GlideSlopeReading{nav::SignalStatus::kStationOffAir, gs.ident};
+  const radio::AircraftPose pose = nav_pose(o);
+  radio::LocalizerReading loc = radio::LocalizerReceiver().read(approach_, pose);
+  radio::GlideSlopeReading gs = radio::GlideSlopeReceiver().read(approach_, pose);
+  if (localizer_off_air_) loc = radio::LocalizerReading{radio::SignalStatus::kStationOffAir, loc.ident};
+  if (glide_slope_off_air_) gs = radio::GlideSlopeReading{radio::SignalStatus::kStationOffAir, gs.ident};
   AfcsInputs in;
   in.aircraft = afcs_aircraft_state(o, pack_, gear_, pilot_);
   ils_queue_.push_back(nav1_ != nullptr ? nav1_signals(nav1_->receive(nav1_tuning_, pose), pose)

@@ -1,6 +1,6 @@
 // The AFCS, the NAV receivers and the flight model composed in-process for batch runs (the
 // closed-loop tests and the autoland Monte Carlo): every frame the localizer and glide-slope
-// receivers (nav_radio) read the ILS record at the aircraft's position (or, set_nav1(), a NAV
+// receivers (common/radio) read the ILS record at the aircraft's position (or, set_nav1(), a NAV
 // radio tuned over a station source reads a VOR or an ILS), the AFCS steps on the
 // aircraft state and those readings, its engaged channels replace the pilot's controls, and the
 // flight model steps one frame. Same order and data as the flight federate hosting the AFCS,
@@ -8,12 +8,12 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
+#include "common/radio/approach_geometry.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "flight/model/afcs/afcs.hpp"
 #include "flight/model/afcs/model_coupling.hpp"
 #include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/scenario/trim.hpp"
-#include "nav/model/radio/approach_geometry.hpp"
-#include "nav/model/radio/nav_radio.hpp"
 
 #include <deque>
 #include <memory>
@@ -22,7 +22,7 @@
 
 namespace fedsim::flight::afcs {
 
-/// A point given in the ILS course coordinates of nav_radio's approach_geometry.hpp: distance
+/// A point given in the ILS course coordinates of common/radio's approach_geometry.hpp: distance
 /// before the threshold along the course line [m] (+ before it, on the approach side), distance
 /// left of the course line [m], altitude MSL [m].
 struct ApproachPoint {
@@ -92,12 +92,12 @@ class ClosedLoopFlight {
   TrimResult start_level_at(const GeodeticPosition& position, double heading_true_rad, double tas_mps,
                             const AircraftControls& configuration);
   /// NAV1 as the federation has it: from the next frame the AFCS's NAV port reads `radio` (a
-  /// nav_radio NavRadio over a station source, e.g. the navigation database's stations) tuned to
+  /// common/radio NavRadio over a station source, e.g. the navigation database's stations) tuned to
   /// `tuning`, a VOR or an ILS (nav1_signals()), instead of the ILS receivers on the approach
   /// record. nullptr: back to those. The radio must outlive its use; set_failed() on it fails NAV1.
-  void set_nav1(nav::NavRadio* radio, const nav::NavTuning& tuning);
+  void set_nav1(radio::NavRadio* radio, const radio::NavTuning& tuning);
   /// NAV1's frequency and OBS (set_nav1()), changeable between frames.
-  nav::NavTuning& nav1_tuning() { return nav1_tuning_; }
+  radio::NavTuning& nav1_tuning() { return nav1_tuning_; }
   /// The ILS course [rad] (true, inbound).
   double course_rad() const { return approach_.course_true_rad; }
 
@@ -130,13 +130,13 @@ class ClosedLoopFlight {
   const AircraftModel& model() const { return *model_; }
   Afcs& afcs() { return *afcs_; }
   const nav::IlsApproach& approach() const { return approach_; }
-  const nav::ApproachGeometry& geometry() const { return geometry_; }
+  const radio::ApproachGeometry& geometry() const { return geometry_; }
   /// The approach coordinates of a geodetic position.
   ApproachPoint approach_point(double lat_rad, double lon_rad, double altitude_m) const;
   /// Set false to keep no history (the Monte Carlo keeps only the touchdown).
   void set_recording(bool on) { recording_ = on; }
   /// Takes the localizer or the glide slope off the air (instructor failure): the receiver
-  /// then reads kStationOffAir, its numbers zeroed (nav_radio's convention for a flag).
+  /// then reads kStationOffAir, its numbers zeroed (common/radio's convention for a flag).
   void set_localizer_off_air(bool off) { localizer_off_air_ = off; }
   void set_glide_slope_off_air(bool off) { glide_slope_off_air_ = off; }
 
@@ -145,7 +145,7 @@ class ClosedLoopFlight {
 
   AircraftPack pack_;
   nav::IlsApproach approach_;
-  nav::ApproachGeometry geometry_;
+  radio::ApproachGeometry geometry_;
   ClosedLoopOptions options_;
   GearGeometry gear_;
   std::unique_ptr<AircraftModel> model_;
@@ -162,14 +162,14 @@ class ClosedLoopFlight {
   bool recording_ = true;
   bool localizer_off_air_ = false;
   bool glide_slope_off_air_ = false;
-  nav::NavRadio* nav1_ = nullptr;
-  nav::NavTuning nav1_tuning_;
+  radio::NavRadio* nav1_ = nullptr;
+  radio::NavTuning nav1_tuning_;
 };
 
 /// The geodetic position of an approach point (the inverse of nav::course_coordinates: the
 /// point of the localizer antenna's tangent plane at those course coordinates; alt_m = the
 /// point's altitude).
-GeodeticPosition approach_point_position(const nav::IlsApproach& approach, const nav::ApproachGeometry& geometry,
+GeodeticPosition approach_point_position(const nav::IlsApproach& approach, const radio::ApproachGeometry& geometry,
                                          const ApproachPoint& point);
 
 }  // namespace fedsim::flight::afcs

@@ -3,8 +3,8 @@
 
 #include "common/csv/csv_reader.hpp"
 #include "common/navdb/ils_row.hpp"
+#include "common/radio/approach_geometry.hpp"
 #include "common/units/units.hpp"
-#include "nav/model/radio/approach_geometry.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 
@@ -56,9 +56,9 @@ nav::IlsApproach load_default_ils_approach(const std::string& airport, const std
 nav::IlsApproach with_course_through_threshold(const nav::IlsApproach& approach,
                                                double* misalignment_at_threshold_m) {
   if (misalignment_at_threshold_m != nullptr) {
-    const nav::ApproachGeometry g = nav::approach_geometry(approach);
+    const radio::ApproachGeometry g = radio::approach_geometry(approach);
     *misalignment_at_threshold_m =
-        nav::course_coordinates(approach, g, approach.threshold.lat_rad, approach.threshold.lon_rad).left_m;
+        radio::course_coordinates(approach, g, approach.threshold.lat_rad, approach.threshold.lon_rad).left_m;
   }
   double distance_m = 0.0, azimuth_at_threshold_deg = 0.0, azimuth_at_antenna_deg = 0.0;
   GeographicLib::Geodesic::WGS84().Inverse(

@@ -75,8 +75,8 @@ AfcsAircraftState afcs_aircraft_state(const AircraftOutputs& o, const AircraftPa
   return a;
 }
 
-nav::AircraftPose nav_pose(const AircraftOutputs& o) {
-  nav::AircraftPose pose;
+radio::AircraftPose nav_pose(const AircraftOutputs& o) {
+  radio::AircraftPose pose;
   pose.lat_rad = o.geodetic.lat_rad;
   pose.lon_rad = o.geodetic.lon_rad;
   pose.altitude_msl_m = o.geodetic.alt_m;
@@ -88,9 +88,9 @@ nav::AircraftPose nav_pose(const AircraftOutputs& o) {
   return pose;
 }
 
-AfcsIlsSignals ils_signals(const nav::LocalizerReading& localizer, const nav::GlideSlopeReading& glide_slope,
-                           const nav::IlsApproach& approach, const nav::ApproachGeometry& geometry,
-                           const nav::AircraftPose& pose) {
+AfcsIlsSignals ils_signals(const radio::LocalizerReading& localizer, const radio::GlideSlopeReading& glide_slope,
+                           const nav::IlsApproach& approach, const radio::ApproachGeometry& geometry,
+                           const radio::AircraftPose& pose) {
   AfcsIlsSignals s;
   s.localizer_valid = localizer.valid();
   if (s.localizer_valid) {
@@ -105,28 +105,28 @@ AfcsIlsSignals ils_signals(const nav::LocalizerReading& localizer, const nav::Gl
     s.glide_path_angle_rad = glide_slope.glide_path_angle_rad;
     s.glide_slope_distance_m = glide_slope.distance_from_antenna_m;
   }
-  const nav::CourseCoordinates cc = nav::course_coordinates(approach, geometry, pose.lat_rad, pose.lon_rad);
+  const radio::CourseCoordinates cc = radio::course_coordinates(approach, geometry, pose.lat_rad, pose.lon_rad);
   s.distance_to_threshold_m = cc.along_m - geometry.threshold_along_m;
   return s;
 }
 
 namespace {
-VorToFrom to_from(nav::ToFrom flag) {
+VorToFrom to_from(radio::ToFrom flag) {
   switch (flag) {
-    case nav::ToFrom::kTo: return VorToFrom::kTo;
-    case nav::ToFrom::kFrom: return VorToFrom::kFrom;
-    case nav::ToFrom::kOff: break;
+    case radio::ToFrom::kTo: return VorToFrom::kTo;
+    case radio::ToFrom::kFrom: return VorToFrom::kFrom;
+    case radio::ToFrom::kOff: break;
   }
   return VorToFrom::kOff;
 }
 }  // namespace
 
-AfcsVorSignals vor_signals(const nav::NavReading& nav, double full_scale_rad) {
+AfcsVorSignals vor_signals(const radio::NavReading& nav, double full_scale_rad) {
   AfcsVorSignals v;
-  v.tuned = nav.signal == nav::NavSignal::kVor;
+  v.tuned = nav.signal == radio::NavSignal::kVor;
   if (!v.tuned) return v;
   v.valid = nav.valid();
-  v.cone_of_confusion = nav.status == nav::SignalStatus::kConeOfConfusion;
+  v.cone_of_confusion = nav.status == radio::SignalStatus::kConeOfConfusion;
   if (v.valid) {
     v.deviation = nav.vor.course_deviation;
     v.full_scale_rad = full_scale_rad;
@@ -138,9 +138,9 @@ AfcsVorSignals vor_signals(const nav::NavReading& nav, double full_scale_rad) {
   return v;
 }
 
-AfcsIlsSignals nav1_signals(const nav::NavReading& nav, const nav::AircraftPose& pose, double vor_full_scale_rad) {
-  if (nav.signal == nav::NavSignal::kLocalizer && nav.approach != nullptr) {
-    return ils_signals(nav.localizer, nav.glide_slope, *nav.approach, nav::approach_geometry(*nav.approach), pose);
+AfcsIlsSignals nav1_signals(const radio::NavReading& nav, const radio::AircraftPose& pose, double vor_full_scale_rad) {
+  if (nav.signal == radio::NavSignal::kLocalizer && nav.approach != nullptr) {
+    return ils_signals(nav.localizer, nav.glide_slope, *nav.approach, radio::approach_geometry(*nav.approach), pose);
   }
   AfcsIlsSignals s;
   s.vor = vor_signals(nav, vor_full_scale_rad);

@@ -1,24 +1,27 @@
 // Coupling the AFCS to the flight model and the NAV receivers, in one place (the JSBSim
 // "LoadInputs" of the AFCS): what the flight federate's adapter, the batch tests and the
-// Monte Carlo use to build AfcsInputs and apply AfcsOutputs.
+// Monte Carlo use to build AfcsInputs and apply AfcsOutputs. The receivers' types are
+// common/radio's (fedsim::radio), the navigation federate's own: in a federation the flight
+// adapter builds NAV1's readings from fedsim/navigation_state, in batch ClosedLoopFlight reads the
+// receivers in-process, and neither needs the navigation federate's code.
 //
-//   AircraftOutputs (+ the pack's gear geometry) -> AfcsAircraftState and nav::AircraftPose;
+//   AircraftOutputs (+ the pack's gear geometry) -> AfcsAircraftState and radio::AircraftPose;
 //   LocalizerReading, GlideSlopeReading (+ the approach geometry) -> AfcsIlsSignals;
 //   NavReading (NAV1: a VOR with its DME, or an ILS) -> AfcsIlsSignals (its vor part for a VOR);
 //   AfcsOutputs -> AircraftControls: the engaged channels replace the pilot's.
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
+#include "common/radio/aircraft_pose.hpp"
+#include "common/radio/approach_geometry.hpp"
+#include "common/radio/glide_slope_receiver.hpp"
+#include "common/radio/localizer_receiver.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "flight/model/afcs/afcs_inputs.hpp"
 #include "flight/model/afcs/afcs_outputs.hpp"
 #include "flight/model/aircraft/aircraft_controls.hpp"
 #include "flight/model/aircraft/aircraft_outputs.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
-#include "nav/model/radio/aircraft_pose.hpp"
-#include "nav/model/radio/approach_geometry.hpp"
-#include "nav/model/radio/glide_slope_receiver.hpp"
-#include "nav/model/radio/localizer_receiver.hpp"
-#include "nav/model/radio/nav_radio.hpp"
 
 #include <vector>
 
@@ -46,23 +49,23 @@ AfcsAircraftState afcs_aircraft_state(const AircraftOutputs& outputs, const Airc
                                       const GearGeometry& gear, const AircraftControls& pilot);
 
 /// The pose the NAV receivers read (the CG stands for the antennas).
-nav::AircraftPose nav_pose(const AircraftOutputs& outputs);
+radio::AircraftPose nav_pose(const AircraftOutputs& outputs);
 
 /// The AFCS ILS port from the receivers' readings; distance to the threshold along the course
 /// from the approach geometry (+ before the threshold).
-AfcsIlsSignals ils_signals(const nav::LocalizerReading& localizer, const nav::GlideSlopeReading& glide_slope,
-                           const nav::IlsApproach& approach, const nav::ApproachGeometry& geometry,
-                           const nav::AircraftPose& pose);
+AfcsIlsSignals ils_signals(const radio::LocalizerReading& localizer, const radio::GlideSlopeReading& glide_slope,
+                           const nav::IlsApproach& approach, const radio::ApproachGeometry& geometry,
+                           const radio::AircraftPose& pose);
 
 /// The AFCS's VOR port from a NAV receiver's reading: tuned when its course signal is a VOR,
 /// the numbers only when valid (the cone-of-confusion flag said as such), the DME when received.
-/// `full_scale_rad`: the receiver's CDI full scale (nav_radio VorReceiverSettings).
-AfcsVorSignals vor_signals(const nav::NavReading& nav, double full_scale_rad);
+/// `full_scale_rad`: the receiver's CDI full scale (common/radio VorReceiverSettings).
+AfcsVorSignals vor_signals(const radio::NavReading& nav, double full_scale_rad);
 
 /// NAV1's reading as the AFCS's NAV port: a localizer with its glide slope (ils_signals() on the
 /// received approach) or a VOR (vor_signals()); the other part flagged.
-AfcsIlsSignals nav1_signals(const nav::NavReading& nav, const nav::AircraftPose& pose,
-                            double vor_full_scale_rad = nav::VorReceiverSettings{}.full_scale_rad);
+AfcsIlsSignals nav1_signals(const radio::NavReading& nav, const radio::AircraftPose& pose,
+                            double vor_full_scale_rad = radio::VorReceiverSettings{}.full_scale_rad);
 
 /// The pilot's controls with the AFCS's engaged channels in their place. The pitch-trim
 /// command runs the trim towards its travel end in the commanded sense (the trim system moves

@@ -17,7 +17,7 @@ double flap_travel_of(const AircraftPack& pack) {
 Aerodynamics::Aerodynamics(const AircraftPack& pack)
     : Aerodynamics(pack.aerodynamics, pack.geometry, flap_travel_of(pack)) {}
 
-Aerodynamics::Aerodynamics(const AeroModelSpec& model, const ReferenceGeometry& geometry,
+Aerodynamics::Aerodynamics(const AeroModelSpec& model, const aircraft_pack::ReferenceGeometry& geometry,
                            double flap_full_travel_rad)
     : model_(model),
       geometry_(geometry),

@@ -70,7 +70,7 @@ class Aerodynamics {
   };
 
   explicit Aerodynamics(const AircraftPack& pack);
-  Aerodynamics(const AeroModelSpec& model, const ReferenceGeometry& geometry,
+  Aerodynamics(const AeroModelSpec& model, const aircraft_pack::ReferenceGeometry& geometry,
                double flap_full_travel_rad);
 
   /// Clears the stall-hysteresis flag.
@@ -84,7 +84,7 @@ class Aerodynamics {
   Outputs compute(const Inputs& in, bool stall_hysteresis) const;
 
   bool stall_hysteresis_active() const { return stalled_; }
-  const ReferenceGeometry& geometry() const { return geometry_; }
+  const aircraft_pack::ReferenceGeometry& geometry() const { return geometry_; }
   const AeroModelSpec& model() const { return model_; }
   /// The flow angles the pack's data cover.
   const AeroFlowEnvelope& envelope() const { return envelope_; }
@@ -108,7 +108,7 @@ class Aerodynamics {
                             Outputs& out) const;
 
   AeroModelSpec model_;
-  ReferenceGeometry geometry_;
+  aircraft_pack::ReferenceGeometry geometry_;
   double flap_full_travel_deg_ = 0.0;
   AeroFlowEnvelope envelope_;
   bool stalled_ = false;

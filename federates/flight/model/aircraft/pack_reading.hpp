@@ -1,10 +1,11 @@
-// Internal helpers of the aircraft-pack loader: vectors, angles, tables and section readers.
+// Internal helpers of the aircraft-pack loader: tables and the flight model's section readers.
 #pragma once
 
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
 
+#include "common/aircraft_pack/pack_reading.hpp"
 #include "common/units/units.hpp"
 #include "common/util/config_node.hpp"
 #include "flight/model/aircraft/aircraft_pack.hpp"
@@ -12,16 +13,10 @@
 namespace fedsim::flight::pack_detail {
 
 using util::ConfigNode;
-
-
-/// A required [x, y, z] list of three numbers.
-Eigen::Vector3d read_vector3(const ConfigNode& parent, const std::string& key);
-
-/// A strictly increasing list of finite numbers; errors point at the offending entry.
-std::vector<double> read_breakpoints(const ConfigNode& parent, const std::string& key);
-
-/// Fails at the first duplicate name (the node of each item is given for its line).
-void require_unique_names(const std::vector<ConfigNode>& items, const std::string& key);
+// The pack's generic readers (common/aircraft_pack), shared with its common sections.
+using aircraft_pack::read_breakpoints;
+using aircraft_pack::read_vector3;
+using aircraft_pack::require_unique_names;
 
 /// A table as written in a pack (see data/aircraft/README.md, "Tables"), before its input names
 /// are resolved. Everything is in lookup order: 1-D (row), 2-D (row, column), 3-D (page, row,
@@ -45,7 +40,7 @@ Table2D read_table_2d(const ConfigNode& parent, const std::string& key,
 // Section readers (one per pack section; see aircraft_pack_loader.cpp for the order).
 FlightControlsSpec read_flight_controls(const ConfigNode& section);
 AeroModelSpec read_aerodynamics(const ConfigNode& section, const FlightControlsSpec& controls);
-std::vector<EngineSpec> read_propulsion(const ConfigNode& section, const MassSpec& mass);
+std::vector<EngineSpec> read_propulsion(const ConfigNode& section, const aircraft_pack::MassSpec& mass);
 LandingGearSpec read_landing_gear(const ConfigNode& section);
 
 }  // namespace fedsim::flight::pack_detail

@@ -324,7 +324,7 @@ FlightControlsSpec read_flight_controls(const ConfigNode& section) {
   return out;
 }
 
-std::vector<EngineSpec> read_propulsion(const ConfigNode& section, const MassSpec& mass) {
+std::vector<EngineSpec> read_propulsion(const ConfigNode& section, const aircraft_pack::MassSpec& mass) {
   section.reject_unknown_keys({"engines"});
   const auto items = section.child("engines").items();
   require_unique_names(items, "name");

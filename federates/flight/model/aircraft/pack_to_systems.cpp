@@ -151,16 +151,16 @@ LandingGear::Params landing_gear_params(const LandingGearSpec& gear) {
   return p;
 }
 
-MassBalance::Params mass_balance_params(const MassSpec& mass,
+MassBalance::Params mass_balance_params(const aircraft_pack::MassSpec& mass,
                                         const std::vector<EngineSpec>& engines) {
   MassBalance::Params p;
   p.empty_mass_kg = mass.empty_mass_kg;
   p.empty_cg_m = mass.empty_cg_m;
   p.empty_inertia_kgm2 = mass.empty_inertia.tensor();
-  for (const PointMassSpec& m : mass.point_masses) {
+  for (const aircraft_pack::PointMassSpec& m : mass.point_masses) {
     p.point_masses.push_back({m.name, m.mass_kg, m.position_m});
   }
-  for (const FuelTankSpec& t : mass.fuel_tanks) {
+  for (const aircraft_pack::FuelTankSpec& t : mass.fuel_tanks) {
     p.tanks.push_back({t.name, t.capacity_kg, t.initial_kg, t.position_m});
   }
   for (const EngineSpec& e : engines) {

@@ -39,7 +39,7 @@ LandingGear::Params landing_gear_params(const LandingGearSpec& gear);
 
 /// Empty aircraft, point masses, tanks (as point masses: the tank-radius inertia is not
 /// carried) and each engine's feed tanks.
-MassBalance::Params mass_balance_params(const MassSpec& mass,
+MassBalance::Params mass_balance_params(const aircraft_pack::MassSpec& mass,
                                         const std::vector<EngineSpec>& engines);
 
 }  // namespace fedsim::flight

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "flight/model/aircraft/aircraft_model.hpp"
 #include "common/atmosphere/airspeed.hpp"
+#include "flight/model/aircraft/aircraft_model.hpp"
 #include "flight/model/weather/wind_profile.hpp"
 
 namespace fedsim::flight {
@@ -76,7 +76,7 @@ class TrimProblem {
       tas_mps_ = true_airspeed();
       equations_ = {kUDot, kVDot, kWDot, kPDot, kQDot, kRDot};
       if (turn_) equations_.push_back(kLateralForce);
-      const LimitsSpec& limits = model.pack().limits;
+      const aircraft_pack::LimitsSpec& limits = model.pack().limits;
       const double alpha_min = limits.alpha_min_rad.value_or(kDefaultAlphaMin);
       const double alpha_max = limits.alpha_max_rad.value_or(kDefaultAlphaMax);
       std::vector<double> lo = {alpha_min, -kBetaLimit, 0.0, -1.0, -1.0, -1.0};

@@ -32,12 +32,12 @@ std::string_view truth_problem(const AvionicsTruth& t) {
   return {};
 }
 
-AvionicsSuite::AvionicsSuite(const StationSource& stations,
+AvionicsSuite::AvionicsSuite(const radio::StationSource& stations,
                              std::span<const IlsApproach> marker_beacons, AvionicsConfig config)
     : stations_(&stations),
       marker_beacons_(marker_beacons),
       config_(std::move(config)),
-      nav_{NavRadio(stations, failures_.stations), NavRadio(stations, failures_.stations)},
+      nav_{radio::NavRadio(stations, failures_.stations), radio::NavRadio(stations, failures_.stations)},
       adf_(stations, failures_.stations),
       gps_(GpsConstellation::baseline_24(), config_.gps),
       flight_director_(config_.flight_director) {
@@ -48,8 +48,8 @@ AvionicsSuite::AvionicsSuite(const StationSource& stations,
   }
 }
 
-AircraftPose AvionicsSuite::pose_of(const AvionicsTruth& t) {
-  AircraftPose p;
+radio::AircraftPose AvionicsSuite::pose_of(const AvionicsTruth& t) {
+  radio::AircraftPose p;
   p.lat_rad = t.lat_rad;
   p.lon_rad = t.lon_rad;
   p.altitude_msl_m = t.altitude_msl_m;
@@ -96,7 +96,7 @@ const AvionicsReadings& AvionicsSuite::step(const AvionicsTruth& truth, double d
     throw std::invalid_argument("frame dt_s = " + std::to_string(dt_s) + ", sim_time_s = " +
                                 std::to_string(sim_time_s) + ": must be finite, dt_s >= 0");
   }
-  const AircraftPose pose = pose_of(truth);
+  const radio::AircraftPose pose = pose_of(truth);
   step_radios(pose);                 // 1-3
   step_gps(truth, sim_time_s);       // 4
   step_ins(truth, dt_s);             // 5
@@ -104,7 +104,7 @@ const AvionicsReadings& AvionicsSuite::step(const AvionicsTruth& truth, double d
   return readings_;
 }
 
-void AvionicsSuite::step_radios(const AircraftPose& pose) {
+void AvionicsSuite::step_radios(const radio::AircraftPose& pose) {
   for (std::size_t i = 0; i < nav_.size(); ++i) {
     nav_[i].set_failed(failures_.nav[i]);
     readings_.nav[i] = nav_[i].receive(radios_.nav[i], pose);
@@ -144,7 +144,7 @@ void AvionicsSuite::step_ins(const AvionicsTruth& truth, double dt_s) {
   readings_.ins_errors = ins_->errors_against(navigation_truth(truth));
 }
 
-void AvionicsSuite::step_flight_director(const AvionicsTruth& truth, const AircraftPose& pose) {
+void AvionicsSuite::step_flight_director(const AvionicsTruth& truth, const radio::AircraftPose& pose) {
   FlightDirectorInputs in;
   in.pose = pose;
   set_nav_source(readings_.nav[0], in);

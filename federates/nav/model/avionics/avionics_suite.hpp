@@ -1,7 +1,7 @@
 // The navigation federate's executive (seed node 3, Section 2.11; Chapter 6): every frame it
 // reads the aircraft's true state and the radio selections, and computes, in this order (stated
 // once, here and in step()):
-//   1. NAV1 and NAV2: VOR or ILS localizer + glide slope, and the paired DME (nav_radio);
+//   1. NAV1 and NAV2: VOR or ILS localizer + glide slope, and the paired DME (common/radio);
 //   2. the ADF needle (nav_radio);
 //   3. the marker beacon receiver (nav_radio), hearing every ILS marker of the database;
 //   4. the GPS fix (nav_gps) from the true antenna position;
@@ -23,12 +23,12 @@
 #pragma once
 
 #include "common/math/rotation.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "nav/model/gps/gps_receiver.hpp"
 #include "nav/model/ins/inertial_navigation_system.hpp"
 #include "nav/model/radio/adf_radio.hpp"
 #include "nav/model/radio/flight_director.hpp"
 #include "nav/model/radio/marker_receiver.hpp"
-#include "nav/model/radio/nav_radio.hpp"
 
 #include <Eigen/Geometry>
 
@@ -54,7 +54,7 @@ struct AvionicsTruth {
 };
 
 struct RadioSelections {
-  std::array<NavTuning, 2> nav{};  // NAV1, NAV2
+  std::array<radio::NavTuning, 2> nav{};  // NAV1, NAV2
   std::uint32_t adf_khz = 0;
 };
 
@@ -74,7 +74,7 @@ struct AvionicsFailures {
   bool markers = false;
   bool ins = false;
   bool gps_denied = false;
-  StationOutages stations;
+  radio::StationOutages stations;
 };
 
 struct AvionicsConfig {
@@ -87,7 +87,7 @@ struct AvionicsConfig {
 };
 
 struct AvionicsReadings {
-  std::array<NavReading, 2> nav{};
+  std::array<radio::NavReading, 2> nav{};
   AdfReading adf;
   MarkerReading marker;
   bool ins_valid = false;
@@ -104,7 +104,7 @@ class AvionicsSuite {
  public:
   /// `stations` and `marker_beacons` must outlive the suite. Throws std::invalid_argument for a
   /// bad configuration.
-  AvionicsSuite(const StationSource& stations, std::span<const IlsApproach> marker_beacons,
+  AvionicsSuite(const radio::StationSource& stations, std::span<const IlsApproach> marker_beacons,
                 AvionicsConfig config);
 
   /// (Re)aligns the INS on the truth (start, reset, reposition, INS restored) and sets the
@@ -122,21 +122,21 @@ class AvionicsSuite {
   bool aligned() const { return ins_.has_value(); }
 
  private:
-  static AircraftPose pose_of(const AvionicsTruth& truth);
+  static radio::AircraftPose pose_of(const AvionicsTruth& truth);
   static NavigationState navigation_truth(const AvionicsTruth& truth);
   ImuSample ideal_imu(const AvionicsTruth& truth) const;
-  void step_radios(const AircraftPose& pose);
+  void step_radios(const radio::AircraftPose& pose);
   void step_gps(const AvionicsTruth& truth, double sim_time_s);
   void step_ins(const AvionicsTruth& truth, double dt_s);
-  void step_flight_director(const AvionicsTruth& truth, const AircraftPose& pose);
+  void step_flight_director(const AvionicsTruth& truth, const radio::AircraftPose& pose);
 
-  const StationSource* stations_;
+  const radio::StationSource* stations_;
   std::span<const IlsApproach> marker_beacons_;
   AvionicsConfig config_;
   RadioSelections radios_;
   FlightDirectorSelections fd_selections_;
   AvionicsFailures failures_;
-  std::array<NavRadio, 2> nav_;
+  std::array<radio::NavRadio, 2> nav_;
   AdfRadio adf_;
   MarkerReceiver markers_;
   GpsReceiver gps_;

@@ -1,6 +1,6 @@
 #include "nav/model/avionics/database_station_source.hpp"
 
-#include "nav/model/radio/nav_radio.hpp"
+#include "common/radio/nav_radio.hpp"
 
 namespace fedsim::nav {
 
@@ -18,12 +18,12 @@ DatabaseStationSource::DatabaseStationSource(const NavDatabase& database) : data
   }
 }
 
-StationsOnFrequency DatabaseStationSource::stations_on(std::uint32_t frequency_khz) const {
+radio::StationsOnFrequency DatabaseStationSource::stations_on(std::uint32_t frequency_khz) const {
   auto it = cache_.find(frequency_khz);
   if (it == cache_.end()) {
     OnFrequency entry;
     entry.navaids = database_->on_frequency(frequency_khz);
-    if (frequency_khz >= kNavBandLowKhz && frequency_khz <= kNavBandHighKhz) {
+    if (frequency_khz >= radio::kNavBandLowKhz && frequency_khz <= radio::kNavBandHighKhz) {
       entry.approaches = database_->ils_on_frequency(frequency_khz);
     }
     it = cache_.emplace(frequency_khz, std::move(entry)).first;

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "common/navdb/nav_database.hpp"
-#include "nav/model/radio/station_source.hpp"
+#include "common/radio/station_source.hpp"
 
 #include <cstdint>
 #include <map>
@@ -15,12 +15,12 @@
 
 namespace fedsim::nav {
 
-class DatabaseStationSource final : public StationSource {
+class DatabaseStationSource final : public radio::StationSource {
  public:
   /// Holds `database` by reference: it must outlive the source.
   explicit DatabaseStationSource(const NavDatabase& database);
 
-  StationsOnFrequency stations_on(std::uint32_t frequency_khz) const override;
+  radio::StationsOnFrequency stations_on(std::uint32_t frequency_khz) const override;
   /// Every ILS approach of the database.
   std::span<const IlsApproach> all_approaches() const { return approaches_; }
   /// Frequencies read from the database so far.

@@ -9,10 +9,10 @@
 // also tunes; FAA AIM 1-1-3) gives kNotTuned, a bad pose kInvalidInput. A bad record throws.
 #pragma once
 
+#include "common/radio/aircraft_pose.hpp"
+#include "common/radio/station_outages.hpp"
+#include "common/radio/station_source.hpp"
 #include "nav/model/radio/adf_receiver.hpp"
-#include "nav/model/radio/aircraft_pose.hpp"
-#include "nav/model/radio/station_outages.hpp"
-#include "nav/model/radio/station_source.hpp"
 
 #include <cstdint>
 
@@ -23,16 +23,16 @@ inline constexpr std::uint32_t kAdfBandHighKhz = 1750;
 
 class AdfRadio {
  public:
-  AdfRadio(const StationSource& source, const StationOutages& outages);
+  AdfRadio(const radio::StationSource& source, const radio::StationOutages& outages);
 
   void set_failed(bool failed) { failed_ = failed; }
   bool failed() const { return failed_; }
 
-  AdfReading receive(std::uint32_t frequency_khz, const AircraftPose& pose) const;
+  AdfReading receive(std::uint32_t frequency_khz, const radio::AircraftPose& pose) const;
 
  private:
-  const StationSource* source_;
-  const StationOutages* outages_;
+  const radio::StationSource* source_;
+  const radio::StationOutages* outages_;
   AdfReceiver adf_;
   bool failed_ = false;
 };

@@ -12,25 +12,25 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
-#include "nav/model/radio/aircraft_pose.hpp"
-#include "nav/model/radio/signal_status.hpp"
+#include "common/radio/aircraft_pose.hpp"
+#include "common/radio/signal_status.hpp"
 
 #include <string>
 
 namespace fedsim::nav {
 
 struct AdfReading {
-  SignalStatus status = SignalStatus::kNoStation;
+  radio::SignalStatus status = radio::SignalStatus::kNoStation;
   std::string ident;
   double relative_bearing_rad = 0.0;         // clockwise from the nose, [0, 2 pi)
   double bearing_to_station_true_rad = 0.0;  // [0, 2 pi)
   double ground_distance_m = 0.0;            // [m]
-  bool valid() const { return status == SignalStatus::kValid; }
+  bool valid() const { return status == radio::SignalStatus::kValid; }
 };
 
 class AdfReceiver {
  public:
-  AdfReading read(const Navaid& ndb, const AircraftPose& pose) const;
+  AdfReading read(const Navaid& ndb, const radio::AircraftPose& pose) const;
 };
 
 }  // namespace fedsim::nav

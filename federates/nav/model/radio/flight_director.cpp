@@ -1,7 +1,7 @@
 #include "nav/model/radio/flight_director.hpp"
 
-#include "nav/model/radio/nav_radio.hpp"
-#include "nav/model/radio/radio_geometry.hpp"
+#include "common/radio/nav_radio.hpp"
+#include "common/radio/radio_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +22,14 @@ void require_positive(const char* name, double value, double upper = INFINITY) {
   }
 }
 
-double flight_path_angle_rad(const AircraftPose& pose) {
+double flight_path_angle_rad(const radio::AircraftPose& pose) {
   if (pose.true_airspeed_mps < kMinAirspeedMps) return 0.0;
   return std::asin(std::clamp(pose.climb_rate_mps / pose.true_airspeed_mps, -1.0, 1.0));
 }
 
 }  // namespace
 
-void set_nav_source(const NavReading& nav, FlightDirectorInputs& inputs) {
+void set_nav_source(const radio::NavReading& nav, FlightDirectorInputs& inputs) {
   inputs.course_valid = nav.valid();
   inputs.course_true_rad = nav.course_true_rad();
   inputs.course_deviation = nav.course_deviation();
@@ -52,7 +52,7 @@ FlightDirector::FlightDirector(FlightDirectorGains gains) : gains_(gains) {
 
 FlightDirectorCommand FlightDirector::command(const FlightDirectorInputs& inputs) const {
   FlightDirectorCommand out;
-  if (!pose_problem(inputs.pose).empty()) return out;
+  if (!radio::pose_problem(inputs.pose).empty()) return out;
   if (const auto roll = roll_command(inputs)) {
     out.roll_command_rad = *roll;
     out.roll_valid = true;
@@ -132,7 +132,7 @@ double FlightDirector::bank_for_direction_error(double error_rad, double airspee
 }
 
 double FlightDirector::pitch_for_flight_path(double gamma_command_rad,
-                                             const AircraftPose& pose) const {
+                                             const radio::AircraftPose& pose) const {
   const double pitch_rad = pose.pitch_rad + (gamma_command_rad - flight_path_angle_rad(pose));
   return std::clamp(pitch_rad, -gains_.pitch_down_limit_rad, gains_.pitch_up_limit_rad);
 }

@@ -39,15 +39,17 @@
 // Below 1 m/s (on the ground) the flight path is taken as level and the bank command is 0.
 #pragma once
 
+#include "common/radio/aircraft_pose.hpp"
 #include "common/units/units.hpp"
-#include "nav/model/radio/aircraft_pose.hpp"
 
 #include <cstdint>
 #include <optional>
 
-namespace fedsim::nav {
-
+namespace fedsim::radio {
 struct NavReading;
+}  // namespace fedsim::radio
+
+namespace fedsim::nav {
 
 enum class LateralMode : std::uint8_t { kOff, kHeadingSelect, kNavTrack };
 enum class VerticalMode : std::uint8_t { kOff, kAltitudeHold, kGlideSlopeTrack };
@@ -64,7 +66,7 @@ struct FlightDirectorGains {
 };
 
 struct FlightDirectorInputs {
-  AircraftPose pose;
+  radio::AircraftPose pose;
   LateralMode lateral_mode = LateralMode::kOff;
   VerticalMode vertical_mode = VerticalMode::kOff;
   double selected_heading_true_rad = 0.0;
@@ -79,7 +81,7 @@ struct FlightDirectorInputs {
 };
 
 /// Copies a NAV receiver's course and glide-slope signals (and their validity) into `inputs`.
-void set_nav_source(const NavReading& nav, FlightDirectorInputs& inputs);
+void set_nav_source(const radio::NavReading& nav, FlightDirectorInputs& inputs);
 
 struct FlightDirectorCommand {
   double roll_command_rad = 0.0;   // + right wing down
@@ -102,7 +104,7 @@ class FlightDirector {
   std::optional<double> roll_command(const FlightDirectorInputs& inputs) const;
   std::optional<double> pitch_command(const FlightDirectorInputs& inputs) const;
   double bank_for_direction_error(double error_rad, double airspeed_mps) const;
-  double pitch_for_flight_path(double gamma_command_rad, const AircraftPose& pose) const;
+  double pitch_for_flight_path(double gamma_command_rad, const radio::AircraftPose& pose) const;
 
   FlightDirectorGains gains_;
 };

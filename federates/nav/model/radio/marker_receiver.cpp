@@ -1,8 +1,8 @@
 #include "nav/model/radio/marker_receiver.hpp"
 
-#include "nav/model/radio/radio_geometry.hpp"
+#include "common/radio/radio_geometry.hpp"
 
-#include "nav/model/radio/approach_geometry.hpp"
+#include "common/radio/approach_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,8 +23,8 @@ struct Candidate {
 };
 
 // Whether the aircraft is inside the cone of the beacon `distance_m` from the threshold.
-std::optional<double> inside_cone(const IlsApproach& approach, const ApproachGeometry& geometry,
-                                  const CourseCoordinates& aircraft, double height_above_m,
+std::optional<double> inside_cone(const IlsApproach& approach, const radio::ApproachGeometry& geometry,
+                                  const radio::CourseCoordinates& aircraft, double height_above_m,
                                   MarkerBeacon beacon, double distance_m) {
   if (height_above_m <= 0.0) return std::nullopt;
   const double glide_path_height_m = approach.threshold_crossing_height_m +
@@ -37,8 +37,8 @@ std::optional<double> inside_cone(const IlsApproach& approach, const ApproachGeo
   return offset_m;
 }
 
-void consider(const IlsApproach& approach, const ApproachGeometry& geometry,
-              const CourseCoordinates& aircraft, double height_above_m, MarkerBeacon beacon,
+void consider(const IlsApproach& approach, const radio::ApproachGeometry& geometry,
+              const radio::CourseCoordinates& aircraft, double height_above_m, MarkerBeacon beacon,
               const std::optional<double>& distance_m, Candidate& best) {
   if (!distance_m) return;
   const auto offset = inside_cone(approach, geometry, aircraft, height_above_m, beacon, *distance_m);
@@ -71,14 +71,14 @@ double marker_coverage_length_m(MarkerBeacon beacon) {
 }
 
 MarkerReading MarkerReceiver::read(std::span<const IlsApproach> approaches,
-                                   const AircraftPose& pose, const StationOutages& outages) const {
+                                   const radio::AircraftPose& pose, const radio::StationOutages& outages) const {
   MarkerReading reading;
   if (failed_) {
-    reading.status = SignalStatus::kReceiverFailed;
+    reading.status = radio::SignalStatus::kReceiverFailed;
     return reading;
   }
-  if (!pose_problem(pose).empty()) {
-    reading.status = SignalStatus::kInvalidInput;
+  if (!radio::pose_problem(pose).empty()) {
+    reading.status = radio::SignalStatus::kInvalidInput;
     return reading;
   }
   const IlsApproach* owner = nullptr;
@@ -86,14 +86,14 @@ MarkerReading MarkerReceiver::read(std::span<const IlsApproach> approaches,
   for (const IlsApproach& approach : approaches) {
     // Markers lie on the approach within a few miles of the threshold: far approaches are
     // skipped without their geometry.
-    if (ground_distance_lower_bound_m(approach.threshold, pose.lat_rad, pose.lon_rad) >
+    if (radio::ground_distance_lower_bound_m(approach.threshold, pose.lat_rad, pose.lon_rad) >
         kMarkerSearchRadiusM) {
       continue;
     }
-    const ApproachGeometry geometry = approach_geometry(approach);  // checks the record
-    if (outages.off_air(approach.ident, StationComponent::kMarkers)) continue;
-    const CourseCoordinates at =
-        course_coordinates(approach, geometry, pose.lat_rad, pose.lon_rad);
+    const radio::ApproachGeometry geometry = radio::approach_geometry(approach);  // checks the record
+    if (outages.off_air(approach.ident, radio::StationComponent::kMarkers)) continue;
+    const radio::CourseCoordinates at =
+        radio::course_coordinates(approach, geometry, pose.lat_rad, pose.lon_rad);
     const double height_m = pose.altitude_msl_m - approach.threshold.elevation_m;
     const Candidate before = best;
     consider(approach, geometry, at, height_m, MarkerBeacon::kOuter,
@@ -107,10 +107,10 @@ MarkerReading MarkerReceiver::read(std::span<const IlsApproach> approaches,
     }
   }
   if (owner == nullptr) {
-    reading.status = SignalStatus::kOutsideCoverage;
+    reading.status = radio::SignalStatus::kOutsideCoverage;
     return reading;
   }
-  reading.status = SignalStatus::kValid;
+  reading.status = radio::SignalStatus::kValid;
   reading.beacon = best.beacon;
   reading.code = marker_code(best.beacon);
   reading.ident = owner->ident;

@@ -24,9 +24,9 @@
 #pragma once
 
 #include "common/navdb/nav_records.hpp"
-#include "nav/model/radio/aircraft_pose.hpp"
-#include "nav/model/radio/signal_status.hpp"
-#include "nav/model/radio/station_outages.hpp"
+#include "common/radio/aircraft_pose.hpp"
+#include "common/radio/signal_status.hpp"
+#include "common/radio/station_outages.hpp"
 
 #include <cstdint>
 #include <span>
@@ -50,12 +50,12 @@ MarkerCode marker_code(MarkerBeacon beacon);
 double marker_coverage_length_m(MarkerBeacon beacon);
 
 struct MarkerReading {
-  SignalStatus status = SignalStatus::kNoStation;  // kValid while a beacon is received
+  radio::SignalStatus status = radio::SignalStatus::kNoStation;  // kValid while a beacon is received
   MarkerBeacon beacon = MarkerBeacon::kNone;
   MarkerCode code;
   std::string ident;                 // the ILS the beacon belongs to
   double horizontal_offset_m = 0.0;  // from the beacon [m]
-  bool valid() const { return status == SignalStatus::kValid; }
+  bool valid() const { return status == radio::SignalStatus::kValid; }
 };
 
 class MarkerReceiver {
@@ -63,8 +63,8 @@ class MarkerReceiver {
   void set_failed(bool failed) { failed_ = failed; }
   bool failed() const { return failed_; }
 
-  MarkerReading read(std::span<const IlsApproach> approaches, const AircraftPose& pose,
-                     const StationOutages& outages) const;
+  MarkerReading read(std::span<const IlsApproach> approaches, const radio::AircraftPose& pose,
+                     const radio::StationOutages& outages) const;
 
  private:
   bool failed_ = false;

@@ -1,7 +1,7 @@
 // Channel files: the shipped ones load (centre; left/centre/right meeting edge to edge), angles
 // in degrees become radians, and malformed files are refused naming the file, line and field.
-#include "visual/model/channel_file.hpp"
 #include "common/util/build_paths.hpp"
+#include "visual/model/channel_file.hpp"
 
 #include "common/units/units.hpp"
 
@@ -34,7 +34,7 @@ TEST(ChannelFile, TheShippedFilesLoad) {
   // Edge to edge: the side channels turn by one full horizontal field of view.
   EXPECT_NEAR(three[0].heading_offset_rad, -three[1].horizontal_fov_rad, 1e-12);
   EXPECT_NEAR(three[2].heading_offset_rad, three[1].horizontal_fov_rad, 1e-12);
-  const ChannelConfig right =
+  const view::ChannelConfig right =
       load_channel(fedsim::util::test_data_dir() + "/../../data/visual/three_channels.yaml", "right");
   EXPECT_EQ(right.name, "right");
 }

@@ -1,9 +1,9 @@
 // Malformed channel configurations, eye poses and environments give clear errors naming the
 // field; PNG files round-trip and bad ones are reported with their path.
-#include "visual/model/channel_config.hpp"
+#include "common/picture/image.hpp"
+#include "common/view/channel_config.hpp"
 #include "visual/model/environment.hpp"
 #include "visual/model/eye_pose.hpp"
-#include "visual/model/image.hpp"
 #include "visual/model/test/test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -25,26 +25,26 @@ std::string error_of(F f) {
 }
 
 TEST(ChannelConfig, MalformedConfigsNameTheField) {
-  ChannelConfig c;
+  view::ChannelConfig c;
   EXPECT_EQ(error_of([&] { validate(c, "visual.yaml"); }), "");
   c.horizontal_fov_rad = std::nan("");
   EXPECT_EQ(error_of([&] { validate(c, "visual.yaml"); }),
             "visual.yaml (channel 'centre'): field 'horizontal_fov_rad': not a finite number");
-  c = ChannelConfig{};
+  c = view::ChannelConfig{};
   c.width_px = 0;
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("field 'width_px': 0 is outside [16, 8192]"),
             std::string::npos);
-  c = ChannelConfig{};
+  c = view::ChannelConfig{};
   c.vertical_fov_rad = 3.0;  // 172 deg
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'vertical_fov_rad'"), std::string::npos);
-  c = ChannelConfig{};
+  c = view::ChannelConfig{};
   c.samples = 3;
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'samples': 3 is not 1, 2 or 4"),
             std::string::npos);
-  c = ChannelConfig{};
+  c = view::ChannelConfig{};
   c.eye_offset_body_m.y() = INFINITY;
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'eye_offset_body_m.y'"), std::string::npos);
-  c = ChannelConfig{};
+  c = view::ChannelConfig{};
   c.pitch_offset_rad = 2.0;
   EXPECT_NE(error_of([&] { validate(c, "x"); }).find("'pitch_offset_rad'"), std::string::npos);
 }
@@ -76,7 +76,7 @@ TEST(Environment, BadEnvironmentsNameTheField) {
 }
 
 TEST(Png, RoundTripAndErrors) {
-  Image image(17, 9);
+  picture::Image image(17, 9);
   for (int row = 0; row < 9; ++row) {
     for (int col = 0; col < 17; ++col) {
       image.set(col, row,
@@ -85,23 +85,23 @@ TEST(Png, RoundTripAndErrors) {
     }
   }
   const auto path = (test::output_dir() / "round_trip.png").string();
-  write_png(image, path);
-  const Image back = read_png(path);
+  picture::write_png(image, path);
+  const picture::Image back = picture::read_png(path);
   ASSERT_EQ(back.width_px, 17);
   ASSERT_EQ(back.height_px, 9);
   EXPECT_EQ(back.rgba, image.rgba);
   const auto missing = (test::output_dir() / "no_such.png").string();
   try {
-    read_png(missing);
+    picture::read_png(missing);
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos);
   }
   const auto text = (test::output_dir() / "not_a.png").string();
   std::ofstream(text) << "not a png";
-  EXPECT_THROW(read_png(text), std::runtime_error);
-  EXPECT_THROW(write_png(Image{}, path), std::invalid_argument);
-  EXPECT_THROW(write_png(image, "/nonexistent/dir/x.png"), std::runtime_error);
+  EXPECT_THROW(picture::read_png(text), std::runtime_error);
+  EXPECT_THROW(picture::write_png(picture::Image{}, path), std::invalid_argument);
+  EXPECT_THROW(picture::write_png(image, "/nonexistent/dir/x.png"), std::runtime_error);
   EXPECT_THROW(image.at(17, 0), std::out_of_range);
 }
 

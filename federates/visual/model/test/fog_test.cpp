@@ -45,7 +45,7 @@ class Fog : public ::testing::Test {
     const double height = (before_threshold_m + 400.0) * std::tan(3.0 * kDegToRad);
     const EyePose eye = test::approach_eye(end, before_threshold_m, height, -3.0 * kDegToRad);
     const RenderedFrame f = renderer_.render(channel_, eye, environment);
-    write_png(f.image, (test::output_dir() / png).string());
+    picture::write_png(f.image, (test::output_dir() / png).string());
     const ChannelCamera camera = renderer_.camera(channel_, eye);
     const Scene& scene = renderer_.scene();
     const int index = scene.find_end("28R");
@@ -69,7 +69,7 @@ class Fog : public ::testing::Test {
       const auto q = camera.project(l.position_scene_m.cast<double>());
       if (!q || !camera.in_picture(*q)) continue;
       ++s.threshold_lights_in_picture;
-      const Rgba8 px = f.image.at(q->column(), q->row());
+      const picture::Rgba8 px = f.image.at(q->column(), q->row());
       // Green: the light's colour stands out from the grey fog.
       if (px.g > px.r + 25 && px.luminance() > 1.05 * s.background_luminance)
         ++s.threshold_lights_seen;
@@ -78,7 +78,7 @@ class Fog : public ::testing::Test {
   }
 
   Renderer renderer_;
-  ChannelConfig channel_;
+  view::ChannelConfig channel_;
   Environment dusk_;
 };
 

@@ -16,13 +16,13 @@ TEST(LightVisibility, InsetLightsOnMarkingsAreSeen) {
   const auto& end = test::ksfo_end("28R");
   // On the threshold, 4 m above the runway, looking 6 deg down the runway.
   const EyePose eye = test::approach_eye(end, 0.0, 4.0, -6.0 * kDegToRad);
-  ChannelConfig channel;
+  view::ChannelConfig channel;
   channel.width_px = 640;
   channel.height_px = 480;
   Environment night;
   night.sun_elevation_rad = -20.0 * kDegToRad;
   const RenderedFrame f = renderer.render(channel, eye, night);
-  write_png(f.image, (test::output_dir() / "inset_lights_night.png").string());
+  picture::write_png(f.image, (test::output_dir() / "inset_lights_night.png").string());
   const ChannelCamera camera = renderer.camera(channel, eye);
   const Scene& scene = renderer.scene();
   const int index = scene.find_end("28R");

@@ -14,12 +14,12 @@ TEST(Renderer, AFrameAllocatesNothing) {
   Renderer renderer(build_airport_scene(test::ksfo_runway_ends(), test::ksfo_options()));
   std::int64_t now_ns = 0;
   renderer.set_clock([&now_ns] { return now_ns += 1000; });
-  ChannelConfig channel;
+  view::ChannelConfig channel;
   Environment fog;
   fog.visibility_m = 600.0;
   fog.cloud = CloudLayer{150.0, 900.0, 60.0};
   EyePose eye = test::approach_eye(test::ksfo_end("28R"), 2000.0, 130.0, -3.0 * test::kDegToRad);
-  Image image;
+  picture::Image image;
   renderer.render(channel, eye, fog, image);  // creates the framebuffer and sizes the image
   eye.alt_msl_m -= 5.0;
   const util::AllocationScope scope;

@@ -18,7 +18,7 @@ using test::kDegToRad;
 
 enum class Seen { kRed, kWhite, kOther };
 
-Seen classify(const Rgba8& p) {
+Seen classify(const picture::Rgba8& p) {
   if (p.r > 150 && p.g < 0.6 * p.r && p.b < 0.6 * p.r) return Seen::kRed;
   if (p.r > 170 && p.g > 0.8 * p.r && p.b > 0.6 * p.r) return Seen::kWhite;
   return Seen::kOther;
@@ -76,13 +76,13 @@ class PapiPicture : public ::testing::Test {
       if (columns != nullptr) columns->push_back(x);
     }
     if (angle_deg == 3.0) {
-      write_png(f.image, (test::output_dir() / "papi_28r_3deg.png").string());
+      picture::write_png(f.image, (test::output_dir() / "papi_28r_3deg.png").string());
     }
     return pattern(seen);
   }
 
   Renderer renderer_;
-  ChannelConfig channel_;
+  view::ChannelConfig channel_;
   Environment day_;
 };
 

@@ -27,7 +27,7 @@ Eigen::Matrix3d rot(const Eigen::Vector3d& axis, double angle) {
 }
 
 // Analytic pinhole: the pixel of a geodetic point for an eye pose and a channel.
-Eigen::Vector2d analytic_pixel(const EyePose& eye, const ChannelConfig& c, double lat_deg,
+Eigen::Vector2d analytic_pixel(const EyePose& eye, const view::ChannelConfig& c, double lat_deg,
                                double lon_deg, double alt_m, double* forward = nullptr) {
   GeographicLib::LocalCartesian local(eye.lat_rad * kRadToDeg, eye.lon_rad * kRadToDeg,
                                       eye.alt_msl_m);
@@ -95,7 +95,7 @@ class Projection : public ::testing::Test {
   GeodeticPosition origin_;
   SceneFrame frame_;
   EyePose eye_;
-  ChannelConfig channel_;
+  view::ChannelConfig channel_;
 };
 
 TEST_F(Projection, CameraMatchesTheAnalyticPinhole) {
@@ -123,7 +123,7 @@ TEST_F(Projection, AKnownPointOnTheBoresightAndOneAtTheCorner) {
       analytic_pixel(eye_, channel_, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
   EXPECT_NEAR(a.x(), 160.0, 1e-3);
   EXPECT_NEAR(a.y(), 120.0, 1e-3);
-  ChannelConfig plain = channel_;
+  view::ChannelConfig plain = channel_;
   plain.heading_offset_rad = plain.pitch_offset_rad = plain.roll_offset_rad = 0.0;
   const Eigen::Vector2d b =
       analytic_pixel(eye_, plain, g.lat_rad * kRadToDeg, g.lon_rad * kRadToDeg, g.alt_m);
@@ -179,7 +179,7 @@ TEST_F(Projection, RenderedLightPointsLightTheAnalyticPixel) {
 TEST_F(Projection, HorizonWhereThePitchPutsIt) {
   // Level wings, pitch -4 deg, no channel offsets, eye 250 m up: the sky/ground boundary lies
   // 4 deg + the dip acos(R/(R+h)) above the centre row (analytic), within a pixel.
-  ChannelConfig c = channel_;
+  view::ChannelConfig c = channel_;
   c.heading_offset_rad = c.pitch_offset_rad = c.roll_offset_rad = 0.0;
   EyePose level = eye_;
   level.phi_rad = 0.0;
@@ -199,7 +199,7 @@ TEST_F(Projection, HorizonWhereThePitchPutsIt) {
   // The boundary: the first row (from the top) whose centre column is green ground.
   int boundary = -1;
   for (int row = 0; row < 240 && boundary < 0; ++row) {
-    const Rgba8 p = f.image.at(160, row);
+    const picture::Rgba8 p = f.image.at(160, row);
     if (p.g > p.b + 10) boundary = row;
   }
   ASSERT_GE(boundary, 0);

@@ -20,10 +20,10 @@ class Sky : public ::testing::Test {
     eye_ = test::approach_eye(test::ksfo_end("28R"), 3000.0, 180.0, 5.0 * kDegToRad);
   }
 
-  Image render(const Environment& e) { return renderer_.render(channel_, eye_, e).image; }
+  picture::Image render(const Environment& e) { return renderer_.render(channel_, eye_, e).image; }
 
   Renderer renderer_;
-  ChannelConfig channel_;
+  view::ChannelConfig channel_;
   EyePose eye_;
 };
 
@@ -32,9 +32,9 @@ TEST_F(Sky, DayIsBrighterThanNight) {
   day.sun_elevation_rad = 40.0 * kDegToRad;
   twilight.sun_elevation_rad = -5.0 * kDegToRad;
   night.sun_elevation_rad = -25.0 * kDegToRad;
-  const Image d = render(day), t = render(twilight), n = render(night);
-  write_png(d, (test::output_dir() / "sky_day.png").string());
-  write_png(n, (test::output_dir() / "sky_night.png").string());
+  const picture::Image d = render(day), t = render(twilight), n = render(night);
+  picture::write_png(d, (test::output_dir() / "sky_day.png").string());
+  picture::write_png(n, (test::output_dir() / "sky_night.png").string());
   // The upper fifth of the picture is sky.
   const double sky_day = test::mean_luminance(d, 0, 0, 320, 48);
   const double sky_twilight = test::mean_luminance(t, 0, 0, 320, 48);
@@ -55,11 +55,11 @@ TEST_F(Sky, SunsetHorizonIsWarmerTowardsTheSun) {
   Environment sunset;
   sunset.sun_elevation_rad = 1.0 * kDegToRad;
   sunset.sun_azimuth_rad = eye_.psi_rad;  // ahead
-  const Image ahead = render(sunset);
+  const picture::Image ahead = render(sunset);
   sunset.sun_azimuth_rad = eye_.psi_rad - units::kPi;  // behind
-  const Image behind = render(sunset);
+  const picture::Image behind = render(sunset);
   // The sky a few degrees above the horizon (pitch +5 deg: the horizon is below the centre).
-  const Rgba8 a = ahead.at(40, 100), b = behind.at(40, 100);
+  const picture::Rgba8 a = ahead.at(40, 100), b = behind.at(40, 100);
   const double warm_ahead = static_cast<double>(a.r) / std::max<int>(a.b, 1);
   const double warm_behind = static_cast<double>(b.r) / std::max<int>(b.b, 1);
   EXPECT_GT(warm_ahead, 1.1 * warm_behind);
@@ -68,7 +68,7 @@ TEST_F(Sky, SunsetHorizonIsWarmerTowardsTheSun) {
 TEST_F(Sky, InsideACloudEverythingIsCloud) {
   Environment e;
   e.cloud = CloudLayer{100.0, 800.0, 60.0};  // the eye at ~180 m is inside
-  const Image in_cloud = render(e);
+  const picture::Image in_cloud = render(e);
   double lo = 1.0, hi = 0.0;
   for (int row = 0; row < 240; row += 4) {
     for (int col = 0; col < 320; col += 4) {
@@ -80,7 +80,7 @@ TEST_F(Sky, InsideACloudEverythingIsCloud) {
   EXPECT_LT(hi - lo, 0.03);  // uniform: no ground, no sky, no horizon
   // Below the base the ground is seen again (negative control).
   e.cloud = CloudLayer{400.0, 1200.0, 60.0};
-  const Image below = render(e);
+  const picture::Image below = render(e);
   EXPECT_GT(std::abs(test::luminance_at(below, 160, 10) - test::luminance_at(below, 160, 230)),
             0.05);
 }

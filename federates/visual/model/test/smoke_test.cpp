@@ -22,7 +22,7 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   // On a 3 deg path to the aiming point 400 m beyond the threshold.
   const EyePose eye = test::approach_eye(
       end, distance_m, (distance_m + 400.0) * std::tan(3.0 * kDegToRad), -3.0 * kDegToRad);
-  ChannelConfig channel;
+  view::ChannelConfig channel;
   channel.width_px = 320;
   channel.height_px = 240;
   Environment day;
@@ -36,13 +36,13 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
               frame.stats.triangles, frame.stats.lights, renderer.description().c_str());
 
   const auto path = (test::output_dir() / "ksfo_28r_3nm_day.png").string();
-  write_png(frame.image, path);
+  picture::write_png(frame.image, path);
   std::printf("wrote %s\n", path.c_str());
-  const Image back = read_png(path);
+  const picture::Image back = picture::read_png(path);
   ASSERT_EQ(back.width_px, frame.image.width_px);
   for (int row = 0; row < back.height_px; row += 7) {
     for (int col = 0; col < back.width_px; col += 5) {
-      const Rgba8 a = back.at(col, row), b = frame.image.at(col, row);
+      const picture::Rgba8 a = back.at(col, row), b = frame.image.at(col, row);
       ASSERT_EQ(a.r, b.r);
       ASSERT_EQ(a.g, b.g);
       ASSERT_EQ(a.b, b.b);
@@ -60,14 +60,14 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
   const auto greenness = [&](const Eigen::Vector3d& p) {
     const auto px = camera.project(p);
     EXPECT_TRUE(px && camera.in_picture(*px));
-    const Rgba8 c = frame.image.at(px->column(), px->row());
+    const picture::Rgba8 c = frame.image.at(px->column(), px->row());
     return c.g - 0.5 * (c.r + c.b);
   };
   const double runway = greenness(info.threshold_scene_m + 300.0 * forward + 12.0 * right);
   const double grass = greenness(info.threshold_scene_m + 300.0 * forward + 150.0 * right);
   EXPECT_GT(grass, runway + 8.0) << "grass " << grass << ", runway " << runway;
   // Sky blue at the top, ground below.
-  const Rgba8 sky = frame.image.at(160, 5);
+  const picture::Rgba8 sky = frame.image.at(160, 5);
   EXPECT_GT(sky.b, sky.r + 40);
   EXPECT_GT(test::mean_luminance(frame.image, 0, 0, 320, 40),
             test::mean_luminance(frame.image, 0, 200, 320, 40));
@@ -87,7 +87,7 @@ TEST(Smoke, KsfoFrom28RApproachAtThreeMiles) {
 
 TEST(Smoke, RenderTimeFromTheLentClock) {
   Renderer renderer(build_airport_scene(test::ksfo_runway_ends(), test::ksfo_options()));
-  ChannelConfig channel;
+  view::ChannelConfig channel;
   const EyePose eye = test::approach_eye(test::ksfo_end("28R"), 2000.0, 130.0, -3.0 * kDegToRad);
   EXPECT_EQ(renderer.render(channel, eye, Environment{}).stats.render_time_ms, 0.0);  // no clock
   std::int64_t now_ns = 0;

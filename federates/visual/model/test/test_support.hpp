@@ -3,10 +3,10 @@
 // statistics, and where test pictures go.
 #pragma once
 
+#include "common/picture/image.hpp"
 #include "common/units/units.hpp"
 #include "visual/model/airport_scene.hpp"
 #include "visual/model/eye_pose.hpp"
-#include "visual/model/image.hpp"
 #include "visual/model/test/ksfo_runways.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
@@ -57,12 +57,12 @@ inline EyePose approach_eye(const nav::RunwayEndRecord& end, double before_thres
   return p;
 }
 
-inline double luminance_at(const Image& image, int column, int row) {
+inline double luminance_at(const picture::Image& image, int column, int row) {
   return image.at(column, row).luminance();
 }
 
 /// Mean luminance (0..1) over a block of pixels, clipped to the image.
-inline double mean_luminance(const Image& image, int column0, int row0, int columns, int rows) {
+inline double mean_luminance(const picture::Image& image, int column0, int row0, int columns, int rows) {
   double sum = 0.0;
   int n = 0;
   for (int r = std::max(0, row0); r < std::min(image.height_px, row0 + rows); ++r) {

@@ -50,12 +50,12 @@ class ThreeChannels : public ::testing::Test {
   }
 
   // Lit pixels of light points placed 2 km away in the given body directions, per channel.
-  std::vector<Image> render(const std::vector<Probe>& probes,
-                            const std::vector<ChannelConfig>& channels) {
+  std::vector<picture::Image> render(const std::vector<Probe>& probes,
+                            const std::vector<view::ChannelConfig>& channels) {
     Scene scene{frame_};
     const double threshold =
         light_threshold_lux(sky_state(night_.sun_elevation_rad).background_luminance_cd_per_m2);
-    const ChannelCamera body(frame_, ChannelConfig{}, eye_);  // no offsets: the body frame
+    const ChannelCamera body(frame_, view::ChannelConfig{}, eye_);  // no offsets: the body frame
     for (const Probe& p : probes) {
       const Eigen::Vector3d dir_body(std::cos(p.elevation_rad) * std::cos(p.azimuth_rad),
                                      std::cos(p.elevation_rad) * std::sin(p.azimuth_rad),
@@ -67,12 +67,12 @@ class ThreeChannels : public ::testing::Test {
       scene.lights.push_back(l);
     }
     Renderer renderer(std::move(scene));
-    std::vector<Image> images;
+    std::vector<picture::Image> images;
     for (const auto& c : channels) images.push_back(renderer.render(c, eye_, night_).image);
     return images;
   }
 
-  static std::vector<int> lit_columns(const Image& image) {
+  static std::vector<int> lit_columns(const picture::Image& image) {
     std::vector<int> columns;
     for (int row = 0; row < image.height_px; ++row) {
       for (int col = 0; col < image.width_px; ++col) {
@@ -84,19 +84,19 @@ class ThreeChannels : public ::testing::Test {
 
   SceneFrame frame_;
   EyePose eye_;
-  ChannelConfig centre_;
+  view::ChannelConfig centre_;
   Environment night_;
 };
 
 TEST_F(ThreeChannels, LayoutIsEdgeToEdge) {
-  const auto c = three_channel_layout(centre_);
+  const auto c = view::three_channel_layout(centre_);
   ASSERT_EQ(c.size(), 3u);
   EXPECT_EQ(c[0].name, "left");
   EXPECT_NEAR(c[0].heading_offset_rad, -kHfov, 1e-12);
   EXPECT_NEAR(c[2].heading_offset_rad, kHfov, 1e-12);
-  ChannelConfig too_wide = centre_;
+  view::ChannelConfig too_wide = centre_;
   too_wide.horizontal_fov_rad = 130.0 * kDegToRad;
-  EXPECT_THROW(three_channel_layout(too_wide), std::invalid_argument);
+  EXPECT_THROW(view::three_channel_layout(too_wide), std::invalid_argument);
 }
 
 TEST_F(ThreeChannels, APointAQuarterPixelEitherSideOfTheBoundary) {
@@ -104,7 +104,7 @@ TEST_F(ThreeChannels, APointAQuarterPixelEitherSideOfTheBoundary) {
   const double t = std::tan(0.5 * kHfov);
   const Probe inside{std::atan(t * (1.0 - 0.5 / kWidth)), 0.0};
   const Probe outside{std::atan(t * (1.0 + 0.5 / kWidth)), 0.0};
-  const auto channels = three_channel_layout(centre_);
+  const auto channels = view::three_channel_layout(centre_);
   const auto in_images = render({inside}, channels);
   EXPECT_EQ(lit_columns(in_images[1]), std::vector<int>{kWidth - 1});  // centre, last column
   EXPECT_TRUE(lit_columns(in_images[2]).empty());
@@ -122,7 +122,7 @@ TEST_F(ThreeChannels, EveryPointInExactlyOneChannelAtItsAnalyticColumn) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> azimuth(-1.45 * kHfov, 1.45 * kHfov);
   std::uniform_real_distribution<double> elevation(-10.0 * kDegToRad, 10.0 * kDegToRad);
-  const auto channels = three_channel_layout(centre_);
+  const auto channels = view::three_channel_layout(centre_);
   std::vector<Probe> probes;
   while (probes.size() < 80) {
     const Probe p{azimuth(random), elevation(random)};
@@ -150,7 +150,7 @@ TEST_F(ThreeChannels, EveryPointInExactlyOneChannelAtItsAnalyticColumn) {
   EXPECT_EQ(total, static_cast<int>(probes.size()));  // no gap, no overlap
 
   // Negative control: channels 1 deg closer together overlap, so some points show twice.
-  std::vector<ChannelConfig> overlapping = channels;
+  std::vector<view::ChannelConfig> overlapping = channels;
   overlapping[0].heading_offset_rad += 1.0 * kDegToRad;
   overlapping[2].heading_offset_rad -= 1.0 * kDegToRad;
   const auto twice = render(probes, overlapping);

@@ -1,4 +1,4 @@
-// Closed loop on the KSFO 28R ILS (data/nav/ils.csv through nav_radio's receivers), the 737
+// Closed loop on the KSFO 28R ILS (data/nav/ils.csv through common/radio's receivers), the 737
 // pack flown by the AFCS: localizer capture from a 30 deg intercept, glide-slope capture from
 // below and above and tracking, no pitch oscillation after capture, no climb or descent to a new
 // MCP altitude on the glide slope, and the flagged signals. Figures of the AFCS issue: LOC

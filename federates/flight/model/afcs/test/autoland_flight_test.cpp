@@ -96,7 +96,7 @@ TEST(LandingFigures, TheRunwayCentrelineIsTheTablesAndTheCourseNowRunsAlongIt) {
   // The localizer antenna, 1,000 ft beyond the far end on the extended centreline.
   EXPECT_NEAR(runway.left_m(ils.localizer.lat_rad, ils.localizer.lon_rad), 0.0, 0.5);
   // The course line laid through the threshold stays on the centreline; the record's own does not.
-  const GeodeticPosition on_course = approach_point_position(ils, nav::approach_geometry(ils), {-600.0, 0.0, 0.0});
+  const GeodeticPosition on_course = approach_point_position(ils, radio::approach_geometry(ils), {-600.0, 0.0, 0.0});
   EXPECT_NEAR(runway.left_m(on_course.lat_rad, on_course.lon_rad), 0.0, 0.1);
   double misalignment = 0.0;
   with_course_through_threshold(ksfo_28r_as_published(), &misalignment);

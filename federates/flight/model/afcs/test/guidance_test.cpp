@@ -4,9 +4,9 @@
 #include "flight/model/afcs/vertical_guidance.hpp"
 
 #include "closed_loop_support.hpp"
-#include "nav/model/radio/approach_geometry.hpp"
-#include "nav/model/radio/glide_slope_receiver.hpp"
-#include "nav/model/radio/localizer_receiver.hpp"
+#include "common/radio/approach_geometry.hpp"
+#include "common/radio/glide_slope_receiver.hpp"
+#include "common/radio/localizer_receiver.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <gtest/gtest.h>
@@ -60,13 +60,13 @@ TEST(GlideSlope, HeightErrorFromTheDeviationMatchesTheGeometry) {
       const double up = distance * std::tan(ils.glide_path_angle_rad) - below;
       double lat = 0, lon = 0, h = 0;
       antenna.Reverse(east, north, up, lat, lon, h);
-      nav::AircraftPose pose;
+      radio::AircraftPose pose;
       pose.lat_rad = lat * kDeg;
       pose.lon_rad = lon * kDeg;
       pose.altitude_msl_m = h;
       pose.heading_true_rad = ils.course_true_rad;
       pose.true_airspeed_mps = 70.0;
-      const nav::GlideSlopeReading r = nav::GlideSlopeReceiver().read(ils, pose);
+      const radio::GlideSlopeReading r = radio::GlideSlopeReceiver().read(ils, pose);
       ASSERT_TRUE(r.valid()) << distance << " " << below;
       const double e = glide_path_height_error_m(r.deviation, r.glide_path_angle_rad, r.distance_from_antenna_m);
       EXPECT_NEAR(e, below, 0.02 * std::abs(below) + 0.1) << distance << " " << below;
@@ -98,21 +98,21 @@ TEST(GlideSlope, CaptureFromBelowAtTheLawsLevelPoint) {
 
 TEST(Localizer, CrossTrackFromTheDeviationMatchesTheCourseGeometry) {
   const nav::IlsApproach& ils = ksfo_28r();
-  const nav::ApproachGeometry geometry = nav::approach_geometry(ils);
+  const radio::ApproachGeometry geometry = radio::approach_geometry(ils);
   for (const double before : {1000.0, 8000.0, 16000.0}) {
     for (const double left : {-150.0, -30.0, 40.0, 200.0}) {
       const GeodeticPosition p = approach_point_position(ils, geometry, {before, left, 500.0});
-      nav::AircraftPose pose;
+      radio::AircraftPose pose;
       pose.lat_rad = p.lat_rad;
       pose.lon_rad = p.lon_rad;
       pose.altitude_msl_m = 500.0;
       pose.heading_true_rad = ils.course_true_rad;
       pose.true_airspeed_mps = 70.0;
-      const nav::LocalizerReading r = nav::LocalizerReceiver().read(ils, pose);
+      const radio::LocalizerReading r = radio::LocalizerReceiver().read(ils, pose);
       ASSERT_TRUE(r.valid());
       if (std::abs(r.deviation) >= 1.0) continue;  // beyond full scale: clamped
       const double y = localizer_cross_track_left_m(r.deviation, r.course_half_width_rad, r.distance_from_antenna_m);
-      const double reference = nav::course_coordinates(ils, geometry, p.lat_rad, p.lon_rad).left_m;
+      const double reference = radio::course_coordinates(ils, geometry, p.lat_rad, p.lon_rad).left_m;
       EXPECT_NEAR(y, reference, 0.005 * std::abs(reference) + 0.5) << before << " " << left;
       EXPECT_NEAR(reference, left, 0.01);  // the helper places the point where asked
     }

@@ -1,5 +1,5 @@
 // Closed loop on VORs of the navigation database (the built nav.sqlite, OurAirports' records:
-// SFO VOR-DME 115.80, slaved variation 17.0 E), received through nav_radio's NavRadio as the
+// SFO VOR-DME 115.80, slaved variation 17.0 E), received through common/radio's NavRadio as the
 // navigation federate's NAV1 is, the 737 pack flown by the AFCS at 250 KCAS, 10,000 ft (290 KTAS):
 // (a) VOR/LOC captures a radial 15-20 NM out from a 30 and a 45 deg intercept, with and without
 //     the DME: overshoot < 0.3 of full scale (3 deg), tracking within 0.1 (1 deg) after capture;
@@ -10,9 +10,9 @@
 #include "closed_loop_support.hpp"
 
 #include "common/navdb/nav_database.hpp"
-#include "nav/model/radio/in_memory_station_source.hpp"
-#include "nav/model/radio/nav_radio.hpp"
-#include "nav/model/radio/station_outages.hpp"
+#include "common/radio/in_memory_station_source.hpp"
+#include "common/radio/nav_radio.hpp"
+#include "common/radio/station_outages.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 
@@ -24,12 +24,12 @@ constexpr std::uint32_t kSfoKhz = 115800;
 /// NAV1 over the navigation database's stations on the frequencies the tests tune.
 struct Nav1 {
   nav::NavDatabase database = nav::NavDatabase::open(nav::default_database_path());
-  nav::InMemoryStationSource stations;
-  nav::StationOutages outages;
-  nav::NavRadio radio;
+  radio::InMemoryStationSource stations;
+  radio::StationOutages outages;
+  radio::NavRadio radio;
   nav::Navaid sfo;
 
-  explicit Nav1(const nav::VorReceiverSettings& settings = {}) : radio(stations, outages, settings) {
+  explicit Nav1(const radio::VorReceiverSettings& settings = {}) : radio(stations, outages, settings) {
     for (nav::Navaid& n : database.on_frequency(kSfoKhz)) {
       if (n.ident == "SFO") sfo = n;
       stations.add(std::move(n));
@@ -123,7 +123,7 @@ TEST(VorInFlight, RadialCaptureFrom30And45DegreesOvershootsLessThan3DegreesAndTr
   for (const double intercept : {30.0, 45.0})
   for (const double side : {+1.0, -1.0}) {
     Nav1 nav1;
-    if (!dme) nav1.outages.set_off_air("SFO", nav::StationComponent::kDme);
+    if (!dme) nav1.outages.set_off_air("SFO", radio::StationComponent::kDme);
     const double course = course_true_rad(nav1, kObsDeg);
     const double offset_m = 3.0 * kNm;
     const double along_m = 18.0 * kNm - offset_m / std::tan(intercept * kDeg);
@@ -213,7 +213,7 @@ PassageFigures passage_figures(const ClosedLoopFlight& f, const Nav1& nav1, doub
 TEST(VorInFlight, StationPassageHoldsTheCourseThroughTheConeThenTracksTheOutboundCourse) {
   for (const double outbound_obs : {60.0, 90.0, -60.0}) {
     const bool cone_flagged = outbound_obs > 0.0;
-    nav::VorReceiverSettings settings;
+    radio::VorReceiverSettings settings;
     if (!cone_flagged) settings.cone_of_confusion_elevation_rad = 90.0 * kDeg;
     Nav1 nav1(settings);
     auto f = inbound(nav1, 60.0, 12.0, 300.0);

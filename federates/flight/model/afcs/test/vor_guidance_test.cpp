@@ -1,11 +1,11 @@
-// The VOR side of VOR/LOC against independent references: the cross track from nav_radio's VOR
+// The VOR side of VOR/LOC against independent references: the cross track from common/radio's VOR
 // receiver against GeographicLib's geodesics, the capture law's lead on a turn integrated here,
 // the nominal distance schedule without DME, and the station-passage cues.
 #include "flight/model/afcs/lateral_guidance.hpp"
 #include "flight/model/afcs/vor_guidance.hpp"
 
 #include "closed_loop_support.hpp"
-#include "nav/model/radio/vor_receiver.hpp"
+#include "common/radio/vor_receiver.hpp"
 
 #include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
@@ -54,14 +54,14 @@ TEST(Vor, CrossTrackFromTheDeviationAndDmeMatchesTheGeodesics) {
     double lat = 0, lon = 0, lat2 = 0, lon2 = 0;
     geod.Direct(vor.position.lat_rad / kDeg, vor.position.lon_rad / kDeg, course / kDeg, out_nm * kNm, lat, lon);
     geod.Direct(lat, lon, (flown - 90.0 * kDeg) / kDeg, left_nm * kNm, lat2, lon2);
-    nav::AircraftPose pose;
+    radio::AircraftPose pose;
     pose.lat_rad = lat2 * kDeg;
     pose.lon_rad = lon2 * kDeg;
     pose.altitude_msl_m = 3000.0;
     pose.true_airspeed_mps = 150.0;
-    const nav::VorReading r = nav::VorReceiver().read(vor, pose, from ? obs : obs + units::kPi);
+    const radio::VorReading r = radio::VorReceiver().read(vor, pose, from ? obs : obs + units::kPi);
     ASSERT_TRUE(r.valid());
-    EXPECT_EQ(r.to_from, from ? nav::ToFrom::kFrom : nav::ToFrom::kTo);
+    EXPECT_EQ(r.to_from, from ? radio::ToFrom::kFrom : radio::ToFrom::kTo);
     if (std::abs(r.course_deviation) >= 1.0) continue;  // beyond full scale: clamped
     double d = 0, azimuth1 = 0, azimuth2 = 0;
     geod.Inverse(vor.position.lat_rad / kDeg, vor.position.lon_rad / kDeg, lat2, lon2, d, azimuth1, azimuth2);

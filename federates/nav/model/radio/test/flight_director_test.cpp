@@ -4,10 +4,10 @@
 // below, altitude capture.
 #include "nav/model/radio/flight_director.hpp"
 
-#include "nav/model/radio/glide_slope_receiver.hpp"
-#include "nav/model/radio/localizer_receiver.hpp"
-#include "nav/model/radio/radio_geometry.hpp"
-#include "station_fixtures.hpp"
+#include "common/radio/glide_slope_receiver.hpp"
+#include "common/radio/localizer_receiver.hpp"
+#include "common/radio/radio_geometry.hpp"
+#include "common/radio/test/station_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +16,8 @@
 #include <stdexcept>
 
 namespace fedsim::nav::test {
+
+using namespace fedsim::radio::test;  // the station records and poses (common/radio/test)
 namespace {
 
 constexpr double kG = units::kStandardGravityMps2;
@@ -138,8 +140,8 @@ struct FollowingAircraft {
   static constexpr double kAlphaRad = 2 * units::kDegToRad;
   static constexpr double kLagS = 1.0;
 
-  AircraftPose pose() const {
-    AircraftPose p = pose_at(position, altitude_m, heading_rad / kDeg, kV);
+  radio::AircraftPose pose() const {
+    radio::AircraftPose p = pose_at(position, altitude_m, heading_rad / kDeg, kV);
     p.roll_rad = bank_rad;
     p.pitch_rad = gamma_rad + kAlphaRad;
     p.climb_rate_mps = kV * std::sin(gamma_rad);
@@ -150,7 +152,7 @@ struct FollowingAircraft {
     if (command.pitch_valid) {
       gamma_rad += (command.pitch_command_rad - kAlphaRad - gamma_rad) * dt_s / kLagS;
     }
-    heading_rad = wrap_two_pi(heading_rad + kG * std::tan(bank_rad) / kV * dt_s);
+    heading_rad = radio::wrap_two_pi(heading_rad + kG * std::tan(bank_rad) / kV * dt_s);
     position = direct(position, heading_rad / kDeg, kV * std::cos(gamma_rad) * dt_s, 0);
     altitude_m += kV * std::sin(gamma_rad) * dt_s;
   }
@@ -168,7 +170,7 @@ TEST(FlightDirectorClosedLoop, CapturesTheLocalizerFromA30DegreeIntercept) {
   double settled_max = 0.0;
   constexpr double kDt = 0.1;
   for (double t = 0; t < 300.0; t += kDt) {
-    const LocalizerReading loc = LocalizerReceiver().read(ils, aircraft.pose());
+    const radio::LocalizerReading loc = radio::LocalizerReceiver().read(ils, aircraft.pose());
     ASSERT_TRUE(loc.valid()) << t << " " << to_string(loc.status);
     FlightDirectorInputs in;
     in.pose = aircraft.pose();
@@ -199,8 +201,8 @@ TEST(FlightDirectorClosedLoop, CapturesTheGlideSlopeFromBelow) {
   double gamma_late = 0.0;
   int late_samples = 0;
   for (double t = 0; t < 330.0; t += kDt) {
-    const LocalizerReading loc = LocalizerReceiver().read(ils, aircraft.pose());
-    const GlideSlopeReading gs = GlideSlopeReceiver().read(ils, aircraft.pose());
+    const radio::LocalizerReading loc = radio::LocalizerReceiver().read(ils, aircraft.pose());
+    const radio::GlideSlopeReading gs = radio::GlideSlopeReceiver().read(ils, aircraft.pose());
     ASSERT_TRUE(loc.valid());
     const double from_threshold_m = loc.distance_from_antenna_m - to_threshold_m;
     if (from_threshold_m < 2 * kNm) break;

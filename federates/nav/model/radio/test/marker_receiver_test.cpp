@@ -3,7 +3,7 @@
 // offset path that passes none, outages and failure.
 #include "nav/model/radio/marker_receiver.hpp"
 
-#include "station_fixtures.hpp"
+#include "common/radio/test/station_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,8 @@
 #include <vector>
 
 namespace fedsim::nav::test {
+
+using namespace fedsim::radio::test;  // the station records and poses (common/radio/test)
 namespace {
 
 struct Passage {
@@ -20,7 +22,7 @@ struct Passage {
 
 // Flies the glide path (height TCH + d tan theta over the threshold) along the extended
 // centreline from 8 NM to the threshold, `left_m` to the left, and lists the beacons heard.
-std::vector<Passage> fly_approach(const IlsApproach& ils, const StationOutages& outages,
+std::vector<Passage> fly_approach(const IlsApproach& ils, const radio::StationOutages& outages,
                                   double left_m = 0.0) {
   const MarkerReceiver receiver;
   const Inverse line = inverse(ils.threshold, ils.localizer);
@@ -49,7 +51,7 @@ std::vector<Passage> fly_approach(const IlsApproach& ils, const StationOutages& 
 }
 
 TEST(MarkerBeacons, PassageOrderAndLengthOnA3DegreeApproach) {
-  const std::vector<Passage> passages = fly_approach(ksfo_28r(), StationOutages{});
+  const std::vector<Passage> passages = fly_approach(ksfo_28r(), radio::StationOutages{});
   ASSERT_EQ(passages.size(), 3u);
   EXPECT_EQ(passages[0].beacon, MarkerBeacon::kOuter);
   EXPECT_EQ(passages[1].beacon, MarkerBeacon::kMiddle);
@@ -60,12 +62,12 @@ TEST(MarkerBeacons, PassageOrderAndLengthOnA3DegreeApproach) {
 }
 
 TEST(MarkerBeacons, OffsetPathHearsNoneAndOutagesSilenceThem) {
-  EXPECT_TRUE(fly_approach(ksfo_28r(), StationOutages{}, 1000.0).empty());
-  StationOutages markers_off;
-  markers_off.set_off_air("ISFO", StationComponent::kMarkers);
+  EXPECT_TRUE(fly_approach(ksfo_28r(), radio::StationOutages{}, 1000.0).empty());
+  radio::StationOutages markers_off;
+  markers_off.set_off_air("ISFO", radio::StationComponent::kMarkers);
   EXPECT_TRUE(fly_approach(ksfo_28r(), markers_off).empty());
-  StationOutages glide_slope_off;  // another component: markers still heard
-  glide_slope_off.set_off_air("ISFO", StationComponent::kGlideSlope);
+  radio::StationOutages glide_slope_off;  // another component: markers still heard
+  glide_slope_off.set_off_air("ISFO", radio::StationComponent::kGlideSlope);
   EXPECT_EQ(fly_approach(ksfo_28r(), glide_slope_off).size(), 3u);
 }
 
@@ -82,16 +84,16 @@ TEST(MarkerBeacons, CodesAndFailure) {
   // Over the outer marker on the glide path.
   const Inverse line = inverse(ils.threshold, ils.localizer);
   const GeoPoint om = direct(ils.threshold, line.azimuth1_deg + 180, *ils.outer_marker_distance_m, 0);
-  const AircraftPose over_om = pose_at(om, 450.0);
+  const radio::AircraftPose over_om = pose_at(om, 450.0);
   MarkerReceiver receiver;
-  const MarkerReading heard = receiver.read({&ils, 1}, over_om, StationOutages{});
+  const MarkerReading heard = receiver.read({&ils, 1}, over_om, radio::StationOutages{});
   ASSERT_TRUE(heard.valid());
   EXPECT_EQ(heard.beacon, MarkerBeacon::kOuter);
   EXPECT_EQ(heard.ident, "ISFO");
   EXPECT_EQ(heard.code.lamp, MarkerLamp::kBlue);
   receiver.set_failed(true);
-  const MarkerReading failed = receiver.read({&ils, 1}, over_om, StationOutages{});
-  EXPECT_EQ(failed.status, SignalStatus::kReceiverFailed);
+  const MarkerReading failed = receiver.read({&ils, 1}, over_om, radio::StationOutages{});
+  EXPECT_EQ(failed.status, radio::SignalStatus::kReceiverFailed);
   EXPECT_EQ(failed.beacon, MarkerBeacon::kNone);
 }
 

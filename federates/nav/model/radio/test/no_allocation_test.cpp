@@ -1,35 +1,37 @@
 // The per-frame calls allocate nothing once the stations are loaded (the counting operator new
 // of fedsim_allocation_counter): a NAV, ADF and marker receive and a flight-director command.
+#include "common/radio/in_memory_station_source.hpp"
+#include "common/radio/nav_radio.hpp"
 #include "common/util/allocation_counter.hpp"
 #include "nav/model/radio/adf_radio.hpp"
 #include "nav/model/radio/flight_director.hpp"
-#include "nav/model/radio/in_memory_station_source.hpp"
 #include "nav/model/radio/marker_receiver.hpp"
-#include "nav/model/radio/nav_radio.hpp"
 
-#include "station_fixtures.hpp"
+#include "common/radio/test/station_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
 namespace fedsim::nav::test {
+
+using namespace fedsim::radio::test;  // the station records and poses (common/radio/test)
 namespace {
 
 TEST(NoAllocation, PerFrameCalls) {
-  InMemoryStationSource source;
+  radio::InMemoryStationSource source;
   source.add(sfo_vor_dme());
   source.add(brijj_ndb());
   source.add(ksfo_28r());
-  StationOutages outages;
+  radio::StationOutages outages;
   outages.set_off_air("XYZ");
-  const NavRadio nav(source, outages);
+  const radio::NavRadio nav(source, outages);
   const AdfRadio adf(source, outages);
   const MarkerReceiver markers;
   const FlightDirector fd;
   const IlsApproach ils = ksfo_28r();
-  const AircraftPose pose =
+  const radio::AircraftPose pose =
       at_elevation_from_glide_slope(ils, from_localizer(ils, 8 * kNm, 0.5), 3 * kDeg);
-  NavReading vor;
-  NavReading loc;
+  radio::NavReading vor;
+  radio::NavReading loc;
   AdfReading ndb;
   MarkerReading marker;
   FlightDirectorCommand command;
